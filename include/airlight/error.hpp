@@ -1,0 +1,29 @@
+#pragma once
+// Errors that reach the user. Bad input names the file and the key and exits 2;
+// any other failure exits 1 (DESIGN §5).
+#include <stdexcept>
+#include <string>
+
+namespace airlight {
+
+enum ExitStatus : int { exit_ok = 0, exit_failure = 1, exit_bad_input = 2 };
+
+// Bad input: a scene file, a mesh, an image, a command-line value.
+// what() reads "<file>: <key>: <message>" (the key may be empty).
+class InputError : public std::runtime_error {
+public:
+  InputError(std::string file, std::string key, const std::string& message);
+  const std::string& file() const { return file_; }
+  const std::string& key() const { return key_; }
+
+private:
+  std::string file_, key_;
+};
+
+// Any other failure: no OpenGL context, an I/O error on output, an internal limit.
+class Failure : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace airlight

@@ -1,0 +1,106 @@
+#pragma once
+// The scene model (DESIGN §1, §4). Every object is a triangle mesh by the time
+// a scene is loaded; phase-function sums are flattened into weighted lobes.
+#include <airlight/image.hpp>
+#include <filesystem>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace airlight {
+
+using Color = glm::vec3;
+
+struct Camera {
+  glm::vec3 position{0, 2, 8}, look_at{0, 1, 0}, up{0, 1, 0};
+  float fov_y_deg = 45.0f;  // full vertical field of view
+  float near = 0.05f, far = 50.0f;
+};
+
+enum class PhaseType { isotropic, rayleigh, henyey_greenstein, schlick, hazy, murky };
+
+// One normalized phase function; g is used by henyey_greenstein and schlick.
+struct PhaseLobe {
+  PhaseType type = PhaseType::isotropic;
+  float g = 0.0f;
+  float weight = 1.0f;
+};
+
+// A weighted sum of lobes, weights summing to 1 (a single function is one lobe).
+struct Phase {
+  std::vector<PhaseLobe> lobes{PhaseLobe{}};
+};
+
+// The homogeneous medium that fills space.
+struct Medium {
+  Color sigma_s{0.0f};  // scattering coefficient, 1/m
+  Color sigma_a{0.0f};  // absorption coefficient, 1/m
+  Phase phase;
+  Color sigma_t() const { return sigma_s + sigma_a; }
+};
+
+// A bounded convex volume whose coefficients add to the medium's inside it.
+struct Volume {
+  glm::vec3 min{0.0f}, max{0.0f};  // shape "box": the only shape so far
+  Color sigma_s{0.0f}, sigma_a{0.0f};
+  Phase phase;
+  Color sigma_t() const { return sigma_s + sigma_a; }
+};
+
+enum class LightModelType { physical, simplified };
+
+// `simplified` is Nilsson 2.5: I / (a1 r^2 + a0), T = 1, isotropic phase.
+struct LightModel {
+  LightModelType type = LightModelType::physical;
+  float a0 = 0.0f, a1 = 1.0f;
+};
+
+enum class LightType { point, spot, directional };
+
+struct Light {
+  LightType type = LightType::point;
+  glm::vec3 position{0.0f};           // point, spot
+  glm::vec3 direction{0, -1, 0};      // spot: axis; directional: the way light travels (unit)
+  Color intensity{0.0f};              // point, spot: W/sr
+  Color irradiance{0.0f};             // directional: W/m^2
+  float cone_deg = 180.0f;            // spot half-angle
+  float edge_deg = 0.0f;              // spot smooth edge width (0 = hard cut, Nilsson eq. 2.9)
+  std::shared_ptr<const Image> gobo;  // spot light map (linear RGB), or null
+  glm::vec3 gobo_up{0, 1, 0};         // orients the gobo (unit, not parallel to direction)
+};
+
+struct Mesh {
+  std::string name;                  // for messages: "objects[2] (hall.obj)"
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;    // per vertex, unit; same size as positions
+  std::vector<glm::uvec3> triangles; // indices into positions
+  Color albedo{0.7f};
+};
+
+struct Scene {
+  std::string name;                  // built-in name or file stem
+  std::filesystem::path source;      // the scene file, empty for built-ins
+  Camera camera;
+  Medium medium;
+  LightModel light_model;
+  std::vector<Volume> volumes;
+  std::vector<Light> lights;
+  std::vector<Mesh> meshes;
+  Color ambient{0.0f};
+};
+
+// Loads and validates an airlight-scene/1 JSON file. Throws InputError naming
+// the file and the key.
+Scene load_scene(const std::filesystem::path& file);
+// Parses scene JSON text; `file` names it in messages and anchors relative paths.
+Scene parse_scene(const std::string& json_text, const std::filesystem::path& file);
+
+// Built-in scenes (DESIGN §4). Throws InputError for an unknown name.
+Scene builtin_scene(const std::string& name);
+std::vector<std::string> builtin_scene_names();
+// The scene `scripts/demo` renders.
+inline constexpr const char* default_builtin = "teapot_spot";
+
+}  // namespace airlight

@@ -1,0 +1,46 @@
+#pragma once
+// Typed settings of a method: each declared by name with a type, a default and a
+// range (DESIGN §3), set from "key=value" text or JSON, reported as JSON.
+#include <map>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+namespace airlight {
+
+struct SettingSpec {
+  enum class Type { real, integer, boolean, choice };
+  std::string name;
+  Type type = Type::real;
+  double default_value = 0.0;  // for choice: the index into `choices`
+  double min = 0.0, max = 0.0;  // inclusive range for real and integer
+  std::vector<std::string> choices;
+  std::string help;
+};
+
+class Settings {
+public:
+  Settings() = default;
+  explicit Settings(std::vector<SettingSpec> specs);
+
+  // "key=value"; `source` names where it came from in messages (e.g. "--set").
+  // Throws InputError(source, key) for an unknown key or a bad value.
+  void set(const std::string& assignment, const std::string& source);
+  void set(const std::string& key, const std::string& value, const std::string& source);
+
+  double real(const std::string& name) const;
+  int integer(const std::string& name) const;
+  bool boolean(const std::string& name) const;
+  const std::string& choice(const std::string& name) const;
+
+  const std::vector<SettingSpec>& specs() const { return specs_; }
+  nlohmann::json to_json() const;
+  std::string describe() const;  // "key=value key=value", for labels and logs
+
+private:
+  const SettingSpec& spec(const std::string& name) const;
+  std::vector<SettingSpec> specs_;
+  std::map<std::string, double> values_;
+};
+
+}  // namespace airlight

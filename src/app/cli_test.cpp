@@ -1,0 +1,150 @@
+// The `airlight` command end to end: exit statuses and messages (DESIGN §5).
+#include "core/image_io.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace airlight {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path& work_dir() {
+  static const fs::path dir = [] {
+    fs::path d = fs::temp_directory_path() / ("airlight_cli_test_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+struct Outcome {
+  int status = -1;
+  std::string err;
+};
+
+Outcome run(const std::string& args) {
+  const fs::path err = work_dir() / "stderr.txt";
+  const std::string command = std::string(AIRLIGHT_EXE) + " " + args + " >/dev/null 2>" + err.string();
+  const int raw = std::system(command.c_str());
+  std::ifstream in(err);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+}
+
+fs::path write_file(const std::string& name, const std::string& text) {
+  const fs::path file = work_dir() / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+// Exit 2 and a message that starts with "<file>: <key>:" (InputError's form).
+void expect_bad_input(const std::string& args, const std::string& file, const std::string& key) {
+  const Outcome o = run(args);
+  EXPECT_EQ(o.status, 2) << args << "\n" << o.err;
+  const std::string prefix = "airlight: error: " + file + (key.empty() ? "" : ": " + key) + ": ";
+  EXPECT_EQ(o.err.rfind(prefix, 0), 0u) << "expected a message starting with '" << prefix << "', got: " << o.err;
+}
+
+const std::string header = R"("format": "airlight-scene/1")";
+
+// A scene with `body` after the format key, rendered; expects exit 2 naming `key`.
+void expect_bad_scene(const std::string& name, const std::string& body, const std::string& key) {
+  const fs::path file = write_file(name + ".json", "{" + header + (body.empty() ? "" : ", " + body) + "}");
+  expect_bad_input("render --scene " + file.string() + " --size 8x6 --out " + (work_dir() / "x.pfm").string(),
+                   file.string(), key);
+}
+
+TEST(Cli, BadScenesExitTwoNamingFileAndKey) {
+  expect_bad_scene("unknown_key", R"("camera": {"positon": [0, 1, 2]})", "camera.positon");
+  expect_bad_scene("wrong_type", R"("camera": {"fov_y_deg": "wide"})", "camera.fov_y_deg");
+  expect_bad_scene("non_finite", R"("medium": {"scattering": 1e999})", "medium.scattering");
+  expect_bad_scene("negative", R"("medium": {"absorption": -0.1})", "medium.absorption");
+  expect_bad_scene("out_of_range", R"("lights": [{"type": "spot", "position": [0, 5, 0],
+      "direction": [0, -1, 0], "intensity": 1, "cone_deg": 200}])", "lights[0].cone_deg");
+  expect_bad_scene("zero_vector", R"("lights": [{"type": "directional", "direction": [0, 0, 0],
+      "irradiance": 1}])", "lights[0].direction");
+  expect_bad_scene("missing_mesh", R"("objects": [{"mesh": "nowhere.obj"}])", "objects[0].mesh");
+  expect_bad_scene("missing_gobo", R"("lights": [{"type": "spot", "position": [0, 5, 0],
+      "direction": [0, -1, 0], "intensity": 1, "cone_deg": 20, "gobo": "nowhere.png"}])", "lights[0].gobo");
+  expect_bad_scene("phase_g", R"("medium": {"phase": {"type": "henyey_greenstein", "g": 1.5}})", "medium.phase.g");
+}
+
+TEST(Cli, MalformedJsonAndMissingFilesNameTheFile) {
+  const fs::path broken = write_file("broken.json", "{" + header + ", \"camera\": {");
+  const Outcome o = run("render --scene " + broken.string() + " --out x.pfm");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err.rfind("airlight: error: " + broken.string() + ": ", 0), 0u) << o.err;
+  const fs::path missing = work_dir() / "missing.json";
+  const Outcome m = run("render --scene " + missing.string() + " --out x.pfm");
+  EXPECT_EQ(m.status, 2);
+  EXPECT_EQ(m.err.rfind("airlight: error: " + missing.string() + ": ", 0), 0u) << m.err;
+}
+
+TEST(Cli, DegenerateTriangleInAnObjNamesTheObjAndTheFace) {
+  const fs::path obj = write_file("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 4\nf 1 2 3\n");
+  const fs::path scene = write_file("flat.json", "{" + header + R"(, "objects": [{"mesh": "flat.obj"}]})");
+  expect_bad_input("render --scene " + scene.string() + " --out x.pfm", obj.string(), "face 2");
+}
+
+TEST(Cli, BadOptionsExitTwoNamingTheOption) {
+  const std::string out = " --out " + (work_dir() / "x.pfm").string();
+  expect_bad_input("render --builtin no_such_scene" + out, "<builtin>", "no_such_scene");
+  expect_bad_input("render --builtin teapot_spot --method no_such_method" + out, "--method", "no_such_method");
+  expect_bad_input("render --builtin teapot_spot --set rel_tol=-1" + out, "--set", "rel_tol");
+  expect_bad_input("render --builtin teapot_spot --set raymarch.steps=4" + out, "--set", "raymarch.steps");
+  expect_bad_input("render --builtin teapot_spot --set bogus=1" + out, "--set", "bogus");
+  expect_bad_input("render --builtin teapot_spot --size 0x5" + out, "command line", "--size");
+  expect_bad_input("render --builtin teapot_spot --size 8x6 --out x.bmp", "x.bmp", "");
+  EXPECT_EQ(run("render --builtin teapot_spot").status, 2);     // --out is required
+  EXPECT_EQ(run("render --size 8x6" + out).status, 2);          // no scene
+  EXPECT_EQ(run("frobnicate").status, 2);                       // unknown subcommand
+  EXPECT_EQ(run("list colours").status, 2);
+}
+
+TEST(Cli, ListNamesMethodsAndScenes) {
+  EXPECT_EQ(run("list methods").status, 0);
+  EXPECT_EQ(run("list scenes").status, 0);
+  EXPECT_EQ(run("--help").status, 0);
+}
+
+// A small render writes finite values and a report that describes them.
+TEST(Cli, RenderWritesImageAndReport) {
+  const fs::path image = work_dir() / "a.pfm", report = work_dir() / "a.json";
+  const Outcome o = run("render --builtin teapot_spot --pass airlight --size 32x24 --out " + image.string() +
+                        " --report " + report.string());
+  ASSERT_EQ(o.status, 0) << o.err;
+  const Image a = read_image(image);
+  ASSERT_EQ(a.width, 32);
+  ASSERT_EQ(a.height, 24);
+  double max_value = 0.0;
+  for (const auto& p : a.pixels)
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_TRUE(std::isfinite(p[c]));
+      ASSERT_GE(p[c], 0.0f);
+      max_value = std::max<double>(max_value, p[c]);
+    }
+  EXPECT_GT(max_value, 0.0);  // the shaft is visible: not a silent black image
+  const nlohmann::json r = nlohmann::json::parse(std::ifstream(report));
+  EXPECT_EQ(r["method"], "reference");
+  EXPECT_EQ(r["size"], nlohmann::json::array({32, 24}));
+  EXPECT_EQ(r["pass"], "airlight");
+  EXPECT_FLOAT_EQ(r["output"]["max"][0].get<float>(), [&] {
+    float m = 0;
+    for (const auto& p : a.pixels) m = std::max(m, p.r);
+    return m;
+  }());
+  EXPECT_GT(r["stats"]["shadow_rays"].get<double>(), 0.0);
+  EXPECT_GT(r["timings"]["render_s"].get<double>(), 0.0);
+}
+
+}  // namespace
+}  // namespace airlight

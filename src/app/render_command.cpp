@@ -1,0 +1,139 @@
+#include "app/commands.hpp"
+#include "app/scene_source.hpp"
+#include "core/image_io.hpp"
+
+#include <airlight/error.hpp>
+#include <airlight/method.hpp>
+
+#include <nlohmann/json.hpp>
+#include <oneapi/tbb/global_control.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <optional>
+
+namespace airlight::app {
+
+namespace {
+
+struct RenderOptions {
+  SceneSource scene;
+  std::string method = "reference", size = "256x192", pass = "composite", out, report;
+  std::vector<std::string> assignments;
+  float exposure = 1.0f;
+  int threads = 0;  // 0: all cores
+};
+
+// "--set key=value" or "--set method.key=value" (the form bench sweeps use).
+Settings method_settings(const MethodInfo& method, const std::vector<std::string>& assignments) {
+  Settings settings(method.settings);
+  for (std::string a : assignments) {
+    const auto dot = a.find('.'), eq = a.find('=');
+    if (dot != std::string::npos && dot < eq) {
+      if (a.substr(0, dot) != method.name)
+        throw InputError("--set", a.substr(0, eq), "the setting names another method than '" + method.name + "'");
+      a = a.substr(dot + 1);
+    }
+    settings.set(a, "--set");
+  }
+  return settings;
+}
+
+Pass parse_pass(const std::string& name) {
+  if (name == "airlight") return Pass::airlight;
+  if (name == "surface") return Pass::surface;
+  return Pass::composite;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Min, mean and max per channel; a non-finite pixel is a method's bug and fails the render.
+nlohmann::json image_stats(const Image& image, const std::string& method) {
+  glm::dvec3 lo(INFINITY), hi(-INFINITY), sum(0.0);
+  long bad = 0;
+  for (const auto& p : image.pixels) {
+    for (int c = 0; c < 3; ++c) {
+      if (!std::isfinite(p[c])) ++bad;
+      lo[c] = std::min<double>(lo[c], p[c]);
+      hi[c] = std::max<double>(hi[c], p[c]);
+      sum[c] += p[c];
+    }
+  }
+  if (bad) throw Failure("method '" + method + "' produced " + std::to_string(bad) + " non-finite values");
+  const glm::dvec3 mean = sum / static_cast<double>(image.pixels.size());
+  auto rgb = [](const glm::dvec3& v) { return nlohmann::json::array({v.r, v.g, v.b}); };
+  return {{"min", rgb(lo)}, {"mean", rgb(mean)}, {"max", rgb(hi)}};
+}
+
+double peak_rss_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+void write_report(const RenderOptions& o, const Scene& scene, const Settings& settings, const Frame& frame,
+                  const nlohmann::json& output, double prepare_s, double render_s) {
+  nlohmann::json passes = nlohmann::json::array(), stats = nlohmann::json::object();
+  for (const auto& t : frame.times) passes.push_back({{"pass", t.pass}, {"seconds", t.seconds}});
+  for (const auto& [name, value] : frame.stats) stats[name] = value;
+  const nlohmann::json report{
+      {"scene", {{"name", scene.name}, {"file", scene.source.string()}}},
+      {"method", o.method},
+      {"settings", settings.to_json()},
+      {"size", {frame.airlight.width, frame.airlight.height}},
+      {"pass", o.pass},
+      {"timings", {{"prepare_s", prepare_s}, {"render_s", render_s}, {"passes", passes}}},
+      {"output", output},
+      {"stats", stats},
+      {"peak_rss_mib", peak_rss_mib()}};
+  std::ofstream file(o.report);
+  if (!(file << report.dump(2) << "\n")) throw Failure("cannot write " + o.report);
+}
+
+void render(const RenderOptions& o) {
+  std::optional<tbb::global_control> limit;
+  if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
+  const Size size = parse_size(o.size, "--size");
+  const MethodInfo& info = find_method(o.method);
+  const Settings settings = method_settings(info, o.assignments);
+  const Scene scene = o.scene.load();
+  auto method = info.create(settings);
+  auto start = std::chrono::steady_clock::now();
+  method->prepare(scene);
+  const double prepare_s = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  const Frame frame = method->render(size.width, size.height);
+  const double render_s = seconds_since(start);
+  const Image image = select_pass(frame, parse_pass(o.pass));
+  const nlohmann::json output = image_stats(image, o.method);
+  write_image(image, o.out, ToneMap{o.exposure});
+  if (!o.report.empty()) write_report(o, scene, settings, frame, output, prepare_s, render_s);
+}
+
+}  // namespace
+
+Run add_render_command(CLI::App& cli) {
+  auto o = std::make_shared<RenderOptions>();
+  auto* command = cli.add_subcommand("render", "render a scene by one method");
+  o->scene.add_options(*command);
+  command->add_option("--method", o->method, "method (airlight list methods)")->capture_default_str();
+  command->add_option("--set", o->assignments, "method setting key=value (repeatable)");
+  command->add_option("--size", o->size, "image size WxH")->capture_default_str();
+  command->add_option("--pass", o->pass, "what to write")
+      ->check(CLI::IsMember({"composite", "airlight", "surface"}))
+      ->capture_default_str();
+  command->add_option("--out", o->out, "output image: .png (tone-mapped), .pfm or .exr (linear)")->required();
+  command->add_option("--report", o->report, "JSON report: scene, method, settings, size, timings, output range");
+  command->add_option("--exposure", o->exposure, "PNG exposure: radiance is multiplied by this")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--threads", o->threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 1024));
+  return [o] { render(*o); };
+}
+
+}  // namespace airlight::app

@@ -1,0 +1,25 @@
+#pragma once
+// Image files: PNG (8-bit sRGB), PFM and EXR (linear float). DESIGN §5: PFM is
+// bottom row first on disk; Image is always top row first in memory.
+#include <airlight/image.hpp>
+#include <filesystem>
+
+namespace airlight {
+
+struct ToneMap {
+  float exposure = 1.0f;  // linear radiance is multiplied by this before sRGB encoding
+};
+
+// Writes by extension: .png (tone-mapped), .pfm, .exr (linear). Throws InputError
+// for an unknown extension, Failure when the file cannot be written.
+void write_image(const Image& image, const std::filesystem::path& file, const ToneMap& tone = {});
+
+// Reads .png (sRGB decoded to linear), .pfm, .exr. Throws InputError (file, "") when
+// the file is missing, unreadable or malformed.
+Image read_image(const std::filesystem::path& file);
+
+// sRGB transfer functions (IEC 61966-2-1), per channel.
+float linear_to_srgb(float linear);
+float srgb_to_linear(float encoded);
+
+}  // namespace airlight

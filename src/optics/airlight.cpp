@@ -1,0 +1,141 @@
+#include "optics/airlight.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <vector>
+
+#include "optics/falloff.hpp"
+#include "optics/gauss_kronrod.hpp"
+#include "optics/light.hpp"
+#include "optics/media.hpp"
+
+namespace airlight::optics {
+namespace {
+
+glm::dvec3 at(const Ray& ray, double x) { return ray.origin + x * ray.dir; }
+
+// Parameters t where the line origin + t·dir meets the double cone of half-angle
+// `angle` around `axis` with apex `apex`: (w·a)² = cos²α |w|², w = x - apex.
+// Both nappes and the apex itself are returned: a spurious break is harmless.
+std::vector<double> cone_crossings(const Ray& ray, const glm::dvec3& apex, const glm::dvec3& axis,
+                                   double angle) {
+  const double c2 = std::cos(angle) * std::cos(angle);
+  const glm::dvec3 w = ray.origin - apex;
+  const double da = glm::dot(ray.dir, axis), wa = glm::dot(w, axis);
+  const double A = da * da - c2;
+  const double B = wa * da - c2 * glm::dot(w, ray.dir);
+  const double C = wa * wa - c2 * glm::dot(w, w);
+  const double scale = std::max({std::abs(A), std::abs(B), 1e-300});
+  if (std::abs(A) <= 1e-14 * scale) {  // the ray is parallel to a generator
+    if (std::abs(B) > 0.0) return {-C / (2.0 * B)};
+    return {};
+  }
+  const double disc = B * B - A * C;
+  if (disc < 0.0) return {};
+  // Stable roots of A t² + 2B t + C = 0.
+  const double q = -(B + std::copysign(std::sqrt(disc), B));
+  std::vector<double> roots{q / A};
+  if (q != 0.0) roots.push_back(C / q);
+  return roots;
+}
+
+// The 1/r² peak at the point of closest approach to a point or spot light.
+std::vector<double> closest_approach_breaks(const Ray& ray, const glm::dvec3& light, double span) {
+  const glm::dvec3 delta = light - ray.origin;
+  const double tc = glm::dot(delta, ray.dir);
+  return falloff_breaks(tc, glm::length(delta - tc * ray.dir), span);
+}
+
+std::vector<double> spot_breaks(const Ray& ray, const Light& light) {
+  const double cone = light.cone_deg * std::numbers::pi / 180.0;
+  const double inner = cone - light.edge_deg * std::numbers::pi / 180.0;
+  const glm::dvec3 apex(light.position), axis = glm::normalize(glm::dvec3(light.direction));
+  std::vector<double> breaks;
+  for (double angle : {cone, inner}) {
+    if (angle <= 0.0 || angle >= std::numbers::pi) continue;
+    for (double t : cone_crossings(ray, apex, axis, angle)) breaks.push_back(t);
+  }
+  return breaks;
+}
+
+// Where the integrand is not smooth (or peaks), plus min_segments even panels.
+std::vector<double> breakpoints(const Scene& scene, const Light& light, const Ray& ray, double t0,
+                                double t1, int min_segments) {
+  const double span = t1 - t0;
+  std::vector<double> breaks = volume_crossings(scene, ray.origin, ray.dir, t0, t1);
+  breaks.insert(breaks.end(), {t0, t1});
+  const int n = std::max(1, min_segments);
+  for (int i = 1; i < n; ++i) breaks.push_back(t0 + span * i / n);
+  if (light.type != LightType::directional) {
+    for (double t : closest_approach_breaks(ray, glm::dvec3(light.position), span)) breaks.push_back(t);
+  }
+  if (light.type == LightType::spot)
+    for (double t : spot_breaks(ray, light)) breaks.push_back(t);
+  std::erase_if(breaks, [&](double t) { return !(t >= t0 && t <= t1); });
+  std::sort(breaks.begin(), breaks.end());
+  const double merge = 1e-12 * span;
+  breaks.erase(std::unique(breaks.begin(), breaks.end(),
+                           [&](double a, double b) { return b - a <= merge; }),
+               breaks.end());
+  breaks.back() = t1;  // unique() may have kept a neighbour within `merge` instead
+  return breaks;
+}
+
+// Narrows [lo, hi] (visibility differs at its ends) to width <= resolution.
+std::array<double, 2> locate_boundary(const Visibility& visible, const Ray& ray, double lo,
+                                      double hi, double resolution) {
+  const bool lit_lo = visible(at(ray, lo));
+  while (hi - lo > resolution) {
+    const double mid = 0.5 * (lo + hi);
+    (visible(at(ray, mid)) == lit_lo ? lo : hi) = mid;
+  }
+  return {lo, hi};
+}
+
+}  // namespace
+
+glm::dvec3 inscatter(const Scene& scene, const Light& light, const Ray& ray, double x) {
+  const glm::dvec3 p = at(ray, x);
+  const Arrival in = arrival(light, scene.light_model, p);
+  if (in.irradiance == glm::dvec3(0.0)) return glm::dvec3(0.0);
+  // cos θ between the light's travel (-to_light) and the way to the eye (-dir).
+  const double cos_theta = glm::dot(in.to_light, ray.dir);
+  const glm::dvec3 depth = light_leg_depth(scene, light, p) + eye_leg_depth(scene, ray.origin, p);
+  return scattering(scene, p, cos_theta) * in.irradiance * glm::exp(-depth);
+}
+
+glm::dvec3 airlight_quadrature(const Scene& scene, const Light& light, const Ray& ray, double t0,
+                               double t1, const Visibility& visible,
+                               const QuadratureSettings& settings) {
+  if (!(t1 > t0)) return glm::dvec3(0.0);
+  const double resolution = 1e-6 * (t1 - t0);  // of shadow boundaries
+  auto evaluate = [&](double a, double b) {
+    const std::array<double, gk::node_count> x = gk::nodes(a, b);
+    std::array<bool, gk::node_count> lit;
+    for (int i = 0; i < gk::node_count; ++i) lit[i] = !visible || visible(at(ray, x[i]));
+    gk::Evaluation<glm::dvec3> ev;
+    if (b - a > resolution) {
+      for (int i = 0; i + 1 < gk::node_count; ++i) {
+        if (lit[i] == lit[i + 1]) continue;
+        ev.split = locate_boundary(visible, ray, x[i], x[i + 1], resolution);
+        return ev;
+      }
+    }
+    std::array<glm::dvec3, gk::node_count> fx;
+    for (int i = 0; i < gk::node_count; ++i)
+      fx[i] = lit[i] ? inscatter(scene, light, ray, x[i]) : glm::dvec3(0.0);
+    ev.estimate = gk::apply<glm::dvec3>(a, b, fx);
+    return ev;
+  };
+  gk::Settings gk_settings;
+  gk_settings.rel_tol = settings.rel_tol;
+  gk_settings.max_depth = settings.max_depth;
+  return gk::integrate_panels<glm::dvec3>(
+      evaluate, breakpoints(scene, light, ray, t0, t1, settings.min_segments), gk_settings);
+}
+
+}  // namespace airlight::optics

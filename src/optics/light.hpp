@@ -1,0 +1,48 @@
+#pragma once
+// What a light sends toward a point: radiant intensity I(ω) of point and spot
+// lights (cone, smooth edge, gobo), and the distance attenuation of each light model.
+#include <airlight/scene.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace airlight::optics {
+
+// Spot cone factor in [0, 1] for the angle between the axis and `dir` (unit,
+// from the light): 1 inside cone_deg - edge_deg, smoothstep down to 0 at cone_deg.
+double spot_cone(const Light& light, const glm::dvec3& dir);
+
+// Gobo texture coordinates of `dir` (unit, from the light): u, v in [0, 1] over
+// the square circumscribing the cone (tan of the angles off the axis scaled by
+// tan(cone_deg)); v = 1 is the gobo's top row, toward gobo_up. Local frame:
+// right = normalize(axis × gobo_up), up = right × axis. Directions at or behind
+// the light's plane (and any direction when cone_deg >= 90) map to (-1, -1),
+// outside the gobo.
+glm::dvec2 gobo_uv(const Light& light, const glm::dvec3& dir);
+
+// Bilinear lookup with clamp-to-edge; (u, v) as gobo_uv returns.
+glm::dvec3 sample_gobo(const Image& gobo, const glm::dvec2& uv);
+
+// I(ω) in W/sr per channel for point and spot lights toward unit `dir` from the
+// light (intensity · cone factor · gobo colour); a directional light's irradiance.
+glm::dvec3 radiant_intensity(const Light& light, const glm::dvec3& dir);
+
+// The distance below which r is clamped in the 1/r² falloff (metres, the scene
+// unit): ∫ dx/r² along a ray through the light diverges, so every integrand uses
+// max(r, min_light_distance). 1 µm is far below any scene scale (>= centimetres),
+// so the clamp changes nothing unless the light lies within 1 µm of the ray.
+inline constexpr double min_light_distance = 1e-6;
+
+// What arrives at `x` from the light, before visibility and extinction on the
+// light's leg: I(ω)/r² (physical), I(ω)/(a1 r² + a0) (simplified, Nilsson eq. 2.13),
+// or the irradiance of a directional light. `to_light` receives the unit
+// direction from x toward the light and `distance` the distance (infinity for
+// directional lights). Directional lights send their irradiance under both
+// light models (no distance falloff); r is clamped at min_light_distance.
+struct Arrival {
+  glm::dvec3 irradiance{0.0};
+  glm::dvec3 to_light{0.0};
+  double distance = 0.0;
+};
+Arrival arrival(const Light& light, const LightModel& model, const glm::dvec3& x);
+
+}  // namespace airlight::optics

@@ -1,0 +1,34 @@
+#pragma once
+// The CPU ground truth (DESIGN §3 `reference`): exact visibility by Embree ray
+// casts, the airlight integral of DESIGN §1 by optics::airlight_quadrature, and
+// Lambertian surfaces, per pixel of the DESIGN §5 camera. Every method is judged
+// against its airlight image.
+#include <airlight/image.hpp>
+#include <airlight/scene.hpp>
+
+namespace airlight::reference {
+
+enum class Pass { composite, airlight, surface };
+
+struct Settings {
+  double rel_tol = 1e-3;  // of each light's airlight integral along each view ray
+  int min_segments = 32;  // initial split of each view ray (narrower shadows may be missed)
+};
+
+struct Frame {
+  Image airlight;   // L_air = Σ_lights ∫_0^d σs·p·I·V·T_light/r²·T_eye dx    (DESIGN §1)
+  Image surface;    // L_surf · T(d); 0 where the view ray reaches the far plane
+  Image composite;  // surface + airlight
+  long shadow_rays = 0;  // occlusion rays traced (for shadow rays per second)
+  long nonfinite = 0;    // pixel channels that were NaN or overflowed float and were
+                         // replaced (NaN → 0, +∞ → FLT_MAX); 0 unless a light sits on a view ray
+};
+
+// Renders all three passes of `scene` at width × height. Shows progress on
+// stderr when it is a terminal. Throws airlight::Failure on Embree errors.
+Frame render(const Scene& scene, int width, int height, const Settings& settings = {});
+
+// The image of one pass.
+const Image& image(const Frame& frame, Pass pass);
+
+}  // namespace airlight::reference

@@ -1,0 +1,244 @@
+#include "scene/json_reader.hpp"
+
+#include <airlight/error.hpp>
+#include <cfloat>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <sstream>
+#include <vector>
+
+namespace airlight::scene_json {
+namespace {
+
+// nlohmann prefixes its messages with "[json.exception.parse_error.101] ";
+// the user needs only the part that says where and what.
+std::string strip_exception_id(const std::string& what) {
+  const auto end = what.find("] ");
+  return (what.rfind("[json.exception.", 0) == 0 && end != std::string::npos)
+             ? what.substr(end + 2)
+             : what;
+}
+
+}  // namespace
+
+std::string number_text(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+// Where the parser is, as a key path ("medium.scattering", "lights[1]"), so that
+// an error the lexer raises (a number overflowing to infinity) still names its key.
+class ParsePath {
+public:
+  void enter(bool is_array) { frames_.push_back({is_array, "", 0}); }
+  void leave() {
+    frames_.pop_back();
+    element_done();
+  }
+  void key(const std::string& name) { frames_.back().key = name; }
+  // A value is complete: an array moves to its next index, an object forgets the key.
+  void element_done() {
+    if (frames_.empty()) return;
+    if (frames_.back().is_array) ++frames_.back().index;
+    else frames_.back().key.clear();
+  }
+  std::string text() const {
+    std::string path;
+    for (const auto& f : frames_) {
+      // Appends one piece at a time: GCC 12 warns falsely (-Wrestrict) on a + b + c here.
+      if (f.is_array) {
+        path += '[';
+        path += std::to_string(f.index);
+        path += ']';
+      } else if (!f.key.empty()) {
+        if (!path.empty()) path += '.';
+        path += f.key;
+      }
+    }
+    return path;
+  }
+
+private:
+  struct Frame {
+    bool is_array;
+    std::string key;
+    int index;
+  };
+  std::vector<Frame> frames_;
+};
+
+Json parse_json_text(const std::string& text, const std::string& file) {
+  // nlohmann keeps the last of duplicate keys silently; a stack of the keys
+  // seen in each open object catches them instead.
+  std::vector<std::set<std::string>> open_objects;
+  ParsePath path;
+  const Json::parser_callback_t track = [&](int, Json::parse_event_t event, Json& parsed) {
+    using E = Json::parse_event_t;
+    switch (event) {
+      case E::object_start: open_objects.emplace_back(); path.enter(false); break;
+      case E::object_end: open_objects.pop_back(); path.leave(); break;
+      case E::array_start: path.enter(true); break;
+      case E::array_end: path.leave(); break;
+      case E::value: path.element_done(); break;
+      case E::key:
+        path.key(parsed.get<std::string>());
+        if (!open_objects.back().insert(parsed.get<std::string>()).second)
+          throw InputError(file, path.text(), "duplicate key");
+        break;
+    }
+    return true;
+  };
+  try {
+    return Json::parse(text, track);
+  } catch (const Json::exception& e) {
+    throw InputError(file, path.text(), "malformed JSON: " + strip_exception_id(e.what()));
+  }
+}
+
+bool Interval::contains(double x) const {
+  const bool above = lo_open ? x > lo : x >= lo;
+  const bool below = hi_open ? x < hi : x <= hi;
+  return above && below;
+}
+
+std::string Interval::describe() const {
+  const bool lo_inf = std::isinf(lo), hi_inf = std::isinf(hi);
+  if (lo_inf && hi_inf) return "finite";
+  if (hi_inf) return (lo_open ? "> " : ">= ") + number_text(lo);
+  if (lo_inf) return (hi_open ? "< " : "<= ") + number_text(hi);
+  return std::string("in ") + (lo_open ? "(" : "[") + number_text(lo) + ", " +
+         number_text(hi) + (hi_open ? ")" : "]");
+}
+
+Interval any_number() { return {}; }
+Interval at_least(double lo) { return {lo, INFINITY, false, false}; }
+Interval greater_than(double lo) { return {lo, INFINITY, true, false}; }
+Interval open(double lo, double hi) { return {lo, hi, true, true}; }
+Interval closed(double lo, double hi) { return {lo, hi, false, false}; }
+Interval left_open(double lo, double hi) { return {lo, hi, true, false}; }
+
+void JsonNode::fail(const std::string& message) const { throw InputError(file(), key_, message); }
+
+float JsonNode::number(const Interval& allowed) const {
+  if (!value_->is_number()) fail(std::string("must be a number, not ") + value_->type_name());
+  // Checked as the float it is stored as: beyond float range is not finite,
+  // and rounding must not carry a value onto an open bound (g = 0.9999999999).
+  const double x = value_->get<double>();
+  if (!(std::fabs(x) <= FLT_MAX)) fail("must be a finite number");  // also NaN
+  const float f = static_cast<float>(x);
+  if (!allowed.contains(f)) fail("must be " + allowed.describe());
+  return f;
+}
+
+int JsonNode::integer(int lo, int hi) const {
+  const float x = number(closed(lo, hi));
+  if (x != std::floor(x)) fail("must be a whole number");
+  return static_cast<int>(x);
+}
+
+std::string JsonNode::string() const {
+  if (!value_->is_string()) fail(std::string("must be a string, not ") + value_->type_name());
+  return value_->get<std::string>();
+}
+
+std::vector<JsonNode> JsonNode::elements() const {
+  if (!value_->is_array()) fail(std::string("must be an array, not ") + value_->type_name());
+  std::vector<JsonNode> result;
+  for (size_t i = 0; i < value_->size(); ++i) {
+    result.emplace_back((*value_)[i], *file_, element_key(i));
+  }
+  return result;
+}
+
+std::vector<JsonNode> JsonNode::fixed_array(size_t size) const {
+  if (!value_->is_array() || value_->size() != size) {
+    fail("must be an array of " + std::to_string(size) + " numbers");
+  }
+  return elements();
+}
+
+glm::vec2 JsonNode::vec2(const Interval& allowed) const {
+  const auto e = fixed_array(2);
+  return {e[0].number(allowed), e[1].number(allowed)};
+}
+
+glm::vec3 JsonNode::vec3(const Interval& allowed) const {
+  const auto e = fixed_array(3);
+  return {e[0].number(allowed), e[1].number(allowed), e[2].number(allowed)};
+}
+
+glm::vec3 JsonNode::direction() const {
+  const glm::vec3 v = vec3();
+  // Lengths are compared in double: a float square of tiny components underflows.
+  const double length = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+  if (!(length > 1e-20)) fail("must not be a zero vector");
+  return glm::vec3(glm::dvec3(v) / length);
+}
+
+Color JsonNode::color(const Interval& allowed) const {
+  if (value_->is_array()) return vec3(allowed);
+  if (!value_->is_number()) fail("must be a number or an array of 3 numbers");
+  return Color(number(allowed));
+}
+
+std::string JsonNode::member_key(std::string_view name) const {
+  return key_.empty() ? std::string(name) : key_ + "." + std::string(name);
+}
+
+std::string JsonNode::element_key(size_t index) const {
+  return key_ + "[" + std::to_string(index) + "]";
+}
+
+JsonObject::JsonObject(const JsonNode& node) : node_(node) {
+  if (!node.json().is_object()) {
+    node.fail(std::string("must be an object, not ") + node.json().type_name());
+  }
+}
+
+bool JsonObject::has(std::string_view name) const { return node_.json().contains(name); }
+
+JsonNode JsonObject::required(std::string_view name) {
+  if (!has(name)) fail(name, "is required");
+  asked_.emplace(name);
+  return JsonNode(node_.json().find(name).value(), node_.file(), node_.member_key(name));
+}
+
+std::optional<JsonNode> JsonObject::optional(std::string_view name) {
+  if (!has(name)) return std::nullopt;
+  return required(name);
+}
+
+void JsonObject::finish() const {
+  for (const auto& item : node_.json().items()) {
+    if (!asked_.contains(item.key())) {
+      throw InputError(node_.file(), node_.member_key(item.key()), "unknown key");
+    }
+  }
+}
+
+void JsonObject::fail(std::string_view name, const std::string& message) const {
+  throw InputError(node_.file(), node_.member_key(name), message);
+}
+
+float JsonObject::number_or(std::string_view name, const Interval& allowed, float fallback) {
+  const auto node = optional(name);
+  return node ? node->number(allowed) : fallback;
+}
+
+glm::vec3 JsonObject::vec3_or(std::string_view name, glm::vec3 fallback) {
+  const auto node = optional(name);
+  return node ? node->vec3() : fallback;
+}
+
+Color JsonObject::color_or(std::string_view name, const Interval& allowed, Color fallback) {
+  const auto node = optional(name);
+  return node ? node->color(allowed) : fallback;
+}
+
+int JsonObject::integer_or(std::string_view name, int lo, int hi, int fallback) {
+  const auto node = optional(name);
+  return node ? node->integer(lo, hi) : fallback;
+}
+
+}  // namespace airlight::scene_json

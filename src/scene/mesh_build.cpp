@@ -1,0 +1,140 @@
+#include "scene/mesh_build.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat4x4.hpp>
+#include <optional>
+#include <unordered_map>
+
+namespace airlight::scene_mesh {
+
+bool is_degenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  // In double: float cross products of nearly parallel edges lose all digits.
+  const glm::dvec3 ab = glm::dvec3(b) - glm::dvec3(a);
+  const glm::dvec3 ac = glm::dvec3(c) - glm::dvec3(a);
+  const glm::dvec3 bc = glm::dvec3(c) - glm::dvec3(b);
+  const double longest2 = std::max({glm::dot(ab, ab), glm::dot(ac, ac), glm::dot(bc, bc)});
+  const double area2 = glm::length(glm::cross(ab, ac));
+  return !(area2 > 1e-10 * longest2) || !(longest2 > 0.0);
+}
+
+glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  return glm::vec3(glm::normalize(glm::cross(glm::dvec3(b) - glm::dvec3(a),
+                                             glm::dvec3(c) - glm::dvec3(a))));
+}
+
+uint32_t MeshBuilder::vertex(const glm::vec3& position, const glm::vec3& normal) {
+  mesh_.positions.push_back(position);
+  mesh_.normals.push_back(glm::normalize(normal));
+  return static_cast<uint32_t>(mesh_.positions.size() - 1);
+}
+
+void MeshBuilder::triangle(uint32_t a, uint32_t b, uint32_t c) {
+  const auto& p = mesh_.positions;
+  if (!is_degenerate(p[a], p[b], p[c])) mesh_.triangles.emplace_back(a, b, c);
+}
+
+void MeshBuilder::quad(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  triangle(a, b, c);
+  triangle(a, c, d);
+}
+
+Mesh MeshBuilder::take(std::string name) {
+  mesh_.name = std::move(name);
+  return std::move(mesh_);
+}
+
+namespace {
+
+using Cell = std::array<int64_t, 3>;
+
+struct CellHash {
+  size_t operator()(const Cell& c) const {
+    return std::hash<int64_t>()(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
+  }
+};
+
+// Finds the vertex of `welded` within `tolerance` of p through a grid of cells
+// the size of the tolerance, so only the 27 cells around p need looking at.
+class WeldGrid {
+public:
+  explicit WeldGrid(float tolerance) : tolerance_(tolerance) {}
+
+  std::optional<uint32_t> find(const glm::vec3& p, const std::vector<glm::vec3>& welded) const {
+    const Cell c = cell(p);
+    for (int64_t dx = -1; dx <= 1; ++dx)
+      for (int64_t dy = -1; dy <= 1; ++dy)
+        for (int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = cells_.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == cells_.end()) continue;
+          for (uint32_t i : it->second)
+            if (glm::distance(welded[i], p) <= tolerance_) return i;
+        }
+    return std::nullopt;
+  }
+  void insert(const glm::vec3& p, uint32_t index) { cells_[cell(p)].push_back(index); }
+
+private:
+  Cell cell(const glm::vec3& p) const {
+    return {static_cast<int64_t>(std::floor(p.x / tolerance_)),
+            static_cast<int64_t>(std::floor(p.y / tolerance_)),
+            static_cast<int64_t>(std::floor(p.z / tolerance_))};
+  }
+  float tolerance_;
+  std::unordered_map<Cell, std::vector<uint32_t>, CellHash> cells_;
+};
+
+}  // namespace
+
+void weld(Mesh& mesh, float tolerance) {
+  WeldGrid grid(tolerance);
+  std::vector<glm::vec3> positions, normal_sums, first_normals;
+  std::vector<uint32_t> remap(mesh.positions.size());
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const glm::vec3& p = mesh.positions[i];
+    if (const auto found = grid.find(p, positions)) {
+      remap[i] = *found;
+      normal_sums[*found] += mesh.normals[i];
+      continue;
+    }
+    remap[i] = static_cast<uint32_t>(positions.size());
+    grid.insert(p, remap[i]);
+    positions.push_back(p);
+    normal_sums.push_back(mesh.normals[i]);
+    first_normals.push_back(mesh.normals[i]);
+  }
+  mesh.positions = std::move(positions);
+  mesh.normals.resize(normal_sums.size());
+  for (size_t i = 0; i < normal_sums.size(); ++i) {
+    // Opposite normals can cancel at a fold: keep one of them then.
+    const float length = glm::length(normal_sums[i]);
+    mesh.normals[i] = length > 1e-3f ? normal_sums[i] / length : first_normals[i];
+  }
+  std::vector<glm::uvec3> triangles;
+  for (const glm::uvec3& t : mesh.triangles) {
+    const glm::uvec3 w(remap[t.x], remap[t.y], remap[t.z]);
+    const auto& p = mesh.positions;
+    if (!is_degenerate(p[w.x], p[w.y], p[w.z])) triangles.push_back(w);
+  }
+  mesh.triangles = std::move(triangles);
+}
+
+glm::mat3 Transform::rotation() const {
+  const glm::vec3 r = glm::radians(rotate_deg);
+  const glm::mat4 m = glm::rotate(glm::mat4(1.0f), r.z, glm::vec3(0, 0, 1)) *
+                      glm::rotate(glm::mat4(1.0f), r.y, glm::vec3(0, 1, 0)) *
+                      glm::rotate(glm::mat4(1.0f), r.x, glm::vec3(1, 0, 0));
+  return glm::mat3(m);
+}
+
+void apply(const Transform& transform, Mesh& mesh) {
+  const glm::mat3 r = transform.rotation();
+  for (glm::vec3& p : mesh.positions) p = r * (transform.scale * p) + transform.translate;
+  // A uniform scale leaves normals' directions alone; renormalize for rounding.
+  for (glm::vec3& n : mesh.normals) n = glm::normalize(r * n);
+}
+
+}  // namespace airlight::scene_mesh

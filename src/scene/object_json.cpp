@@ -1,0 +1,107 @@
+// "objects" entries (DESIGN §4). Every object has the optional keys
+//   translate [x,y,z], rotate_deg [rx,ry,rz] (about world X, then Y, then Z),
+//   scale s (> 0, uniform), albedo (colour in [0,1], default 0.7), name;
+// and either "mesh": "file.obj" or "shape" with the shape's keys:
+//   box       min, max
+//   sphere    radius; center [0,0,0]; segments 48 (around; segments/2 rings)
+//   plane     size [sx, sz]; center [0,0,0]; normal [0,1,0]
+//   cylinder  radius, height (along +y); base [0,0,0] (centre of the bottom cap); segments 48
+//   teapot    segments 8 (quads per patch edge); 1 unit tall on y = 0 at scale 1
+#include "scene/mesh_build.hpp"
+#include "scene/scene_parse.hpp"
+#include "scene/shapes.hpp"
+
+#include <cmath>
+#include <glm/vector_relational.hpp>
+#include <map>
+
+namespace airlight::scene_json {
+namespace {
+
+using namespace scene_mesh;
+
+Mesh read_box(JsonObject& o) {
+  const glm::vec3 min = o.required("min").vec3(), max = o.required("max").vec3();
+  if (!glm::all(glm::lessThan(min, max))) o.fail("max", "must exceed min on every axis");
+  return make_box(min, max);
+}
+
+Mesh read_sphere(JsonObject& o) {
+  const glm::vec3 center = o.vec3_or("center", glm::vec3(0.0f));
+  const float radius = o.required("radius").number(greater_than(0));
+  return make_sphere(center, radius, o.integer_or("segments", 4, 1024, 48));
+}
+
+Mesh read_plane(JsonObject& o) {
+  const glm::vec3 center = o.vec3_or("center", glm::vec3(0.0f));
+  const glm::vec2 size = o.required("size").vec2(greater_than(0));
+  const auto normal = o.optional("normal");
+  return make_plane(center, size, normal ? normal->direction() : glm::vec3(0, 1, 0));
+}
+
+Mesh read_cylinder(JsonObject& o) {
+  const glm::vec3 base = o.vec3_or("base", glm::vec3(0.0f));
+  const float radius = o.required("radius").number(greater_than(0));
+  const float height = o.required("height").number(greater_than(0));
+  return make_cylinder(base, radius, height, o.integer_or("segments", 3, 1024, 48));
+}
+
+Mesh read_teapot(JsonObject& o) { return make_teapot(o.integer_or("segments", 2, 64, 8)); }
+
+Mesh read_shape(JsonObject& o) {
+  using Reader = Mesh (*)(JsonObject&);
+  static const std::map<std::string, Reader> readers = {{"box", read_box},
+                                                        {"sphere", read_sphere},
+                                                        {"plane", read_plane},
+                                                        {"cylinder", read_cylinder},
+                                                        {"teapot", read_teapot}};
+  const JsonNode shape = o.required("shape");
+  const auto it = readers.find(shape.string());
+  if (it == readers.end()) shape.fail("must be box, sphere, plane, cylinder or teapot");
+  return it->second(o);
+}
+
+Mesh read_mesh_file(JsonObject& o, const std::filesystem::path& base_dir) {
+  const JsonNode mesh = o.required("mesh");
+  const std::filesystem::path file = base_dir / mesh.string();
+  if (!std::filesystem::is_regular_file(file)) mesh.fail("file not found: " + file.string());
+  return load_obj(file);
+}
+
+Transform read_transform(JsonObject& o) {
+  Transform t;
+  t.translate = o.vec3_or("translate", t.translate);
+  t.rotate_deg = o.vec3_or("rotate_deg", t.rotate_deg);
+  t.scale = o.number_or("scale", greater_than(0), t.scale);
+  return t;
+}
+
+// Extreme sizes and transforms can overflow or collapse float geometry.
+void check_placed(const Mesh& mesh, const JsonNode& node) {
+  if (mesh.triangles.empty()) node.fail("is too small to make any triangle");
+  for (const glm::vec3& p : mesh.positions)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      node.fail("its transform makes coordinates non-finite");
+  for (const glm::uvec3& t : mesh.triangles)
+    if (is_degenerate(mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z]))
+      node.fail("its transform collapses triangles to zero area");
+}
+
+}  // namespace
+
+Mesh read_object(const JsonNode& node, const std::filesystem::path& base_dir) {
+  JsonObject o(node);
+  if (o.has("shape") == o.has("mesh")) node.fail("needs exactly one of \"shape\" and \"mesh\"");
+  Mesh mesh = o.has("shape") ? read_shape(o) : read_mesh_file(o, base_dir);
+  const Transform transform = read_transform(o);
+  mesh.albedo = o.color_or("albedo", closed(0, 1), mesh.albedo);
+  const auto name = o.optional("name");
+  const std::string label = name ? name->string() : mesh.name;
+  o.finish();
+  apply(transform, mesh);
+  check_placed(mesh, node);
+  mesh.name = node.key() + " (" + label + ")";
+  return mesh;
+}
+
+}  // namespace airlight::scene_json

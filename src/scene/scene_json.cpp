@@ -1,0 +1,251 @@
+// The airlight-scene/1 format (DESIGN §4): one reader per section, each
+// checking its values' types and ranges and rejecting keys it does not know.
+#include "core/image_io.hpp"
+#include "scene/json_reader.hpp"
+#include "scene/light_defaults.hpp"
+#include "scene/scene_parse.hpp"
+
+#include <airlight/error.hpp>
+#include <airlight/scene.hpp>
+#include <cmath>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
+#include <map>
+#include <sstream>
+
+namespace airlight {
+namespace {
+
+using namespace scene_json;
+using scene_light::default_gobo_up;
+using scene_light::parallel;
+
+constexpr const char* kFormat = "airlight-scene/1";
+
+// ---- phase functions -------------------------------------------------------
+
+const std::map<std::string, PhaseType>& phase_types() {
+  static const std::map<std::string, PhaseType> types = {
+      {"isotropic", PhaseType::isotropic}, {"rayleigh", PhaseType::rayleigh},
+      {"henyey_greenstein", PhaseType::henyey_greenstein}, {"schlick", PhaseType::schlick},
+      {"hazy", PhaseType::hazy}, {"murky", PhaseType::murky}};
+  return types;
+}
+
+void add_lobes(const JsonNode& node, float weight, std::vector<PhaseLobe>& lobes);
+
+// A weighted sum: its terms' weights must sum to 1; nested sums multiply out.
+void add_sum(JsonObject& o, float weight, std::vector<PhaseLobe>& lobes) {
+  const JsonNode terms = o.required("terms");
+  const auto elements = terms.elements();
+  if (elements.empty()) terms.fail("must list at least one term");
+  double total = 0.0;
+  for (const JsonNode& element : elements) {
+    JsonObject term(element);
+    const float w = term.required("weight").number(closed(0, 1));
+    add_lobes(term.required("phase"), weight * w, lobes);
+    term.finish();
+    total += w;
+  }
+  if (std::fabs(total - 1.0) > 1e-4) {
+    terms.fail("the weights must sum to 1, not " + number_text(total));
+  }
+}
+
+void add_lobes(const JsonNode& node, float weight, std::vector<PhaseLobe>& lobes) {
+  JsonObject o(node);
+  const JsonNode type = o.required("type");
+  const std::string name = type.string();
+  if (name == "sum") {
+    add_sum(o, weight, lobes);
+  } else {
+    const auto it = phase_types().find(name);
+    if (it == phase_types().end()) {
+      type.fail("unknown phase function \"" + name +
+                "\" (isotropic, rayleigh, henyey_greenstein, schlick, hazy, murky, sum)");
+    }
+    PhaseLobe lobe{it->second, 0.0f, weight};
+    if (lobe.type == PhaseType::henyey_greenstein || lobe.type == PhaseType::schlick) {
+      lobe.g = o.required("g").number(open(-1, 1));
+    }
+    lobes.push_back(lobe);
+  }
+  o.finish();
+}
+
+Phase read_phase(const JsonNode& node) {
+  Phase phase;
+  phase.lobes.clear();
+  add_lobes(node, 1.0f, phase.lobes);
+  return phase;
+}
+
+Phase read_phase_or_isotropic(JsonObject& o) {
+  const auto node = o.optional("phase");
+  return node ? read_phase(*node) : Phase{};
+}
+
+// ---- camera, medium, light model, volumes -------------------------------------
+
+Camera read_camera(const JsonNode& node) {
+  JsonObject o(node);
+  Camera c;
+  c.position = o.vec3_or("position", c.position);
+  c.look_at = o.vec3_or("look_at", c.look_at);
+  if (const auto up = o.optional("up")) c.up = up->direction();
+  c.fov_y_deg = o.number_or("fov_y_deg", open(0, 180), c.fov_y_deg);
+  c.near = o.number_or("near", greater_than(0), c.near);
+  c.far = o.number_or("far", greater_than(0), c.far);
+  o.finish();
+  if (!(c.far > c.near)) o.fail("far", "must be greater than near (" + number_text(c.near) + ")");
+  const glm::dvec3 view = glm::dvec3(c.look_at) - glm::dvec3(c.position);
+  if (!(glm::length(view) > 0.0)) o.fail("look_at", "must differ from position");
+  if (parallel(view, glm::dvec3(c.up))) o.fail("up", "must not be parallel to the view direction");
+  return c;
+}
+
+Medium read_medium(const JsonNode& node) {
+  JsonObject o(node);
+  Medium m;
+  m.sigma_s = o.color_or("scattering", at_least(0), m.sigma_s);
+  m.sigma_a = o.color_or("absorption", at_least(0), m.sigma_a);
+  m.phase = read_phase_or_isotropic(o);
+  o.finish();
+  return m;
+}
+
+LightModel read_light_model(const JsonNode& node) {
+  JsonObject o(node);
+  LightModel model;
+  const JsonNode type = o.required("type");
+  const std::string name = type.string();
+  if (name == "simplified") {
+    model.type = LightModelType::simplified;
+    model.a0 = o.number_or("a0", at_least(0), model.a0);
+    model.a1 = o.number_or("a1", at_least(0), model.a1);
+    if (model.a0 == 0.0f && model.a1 == 0.0f) node.fail("a0 and a1 must not both be 0");
+  } else if (name != "physical") {
+    type.fail("must be \"physical\" or \"simplified\"");
+  }
+  o.finish();
+  return model;
+}
+
+Volume read_volume(const JsonNode& node) {
+  JsonObject o(node);
+  const JsonNode shape = o.required("shape");
+  if (shape.string() != "box") shape.fail("must be \"box\" (the only volume shape so far)");
+  Volume v;
+  v.min = o.required("min").vec3();
+  v.max = o.required("max").vec3();
+  if (!glm::all(glm::lessThan(v.min, v.max))) o.fail("max", "must exceed min on every axis");
+  v.sigma_s = o.color_or("scattering", at_least(0), v.sigma_s);
+  v.sigma_a = o.color_or("absorption", at_least(0), v.sigma_a);
+  v.phase = read_phase_or_isotropic(o);
+  o.finish();
+  return v;
+}
+
+// ---- lights ----------------------------------------------------------------
+
+std::shared_ptr<const Image> read_gobo(const JsonNode& node, const std::filesystem::path& base_dir) {
+  const std::filesystem::path file = base_dir / node.string();
+  if (!std::filesystem::is_regular_file(file)) node.fail("file not found: " + file.string());
+  auto image = std::make_shared<const Image>(read_image(file));
+  if (image->empty()) node.fail("the image is empty: " + file.string());
+  return image;
+}
+
+void read_spot(JsonObject& o, Light& light, const std::filesystem::path& base_dir) {
+  light.position = o.required("position").vec3();
+  light.direction = o.required("direction").direction();
+  light.intensity = o.required("intensity").color(at_least(0));
+  light.cone_deg = o.required("cone_deg").number(left_open(0, 180));
+  light.edge_deg = o.number_or("edge_deg", closed(0, light.cone_deg), 0.0f);
+  light.gobo_up = default_gobo_up(light.direction);
+  if (const auto up = o.optional("gobo_up")) {
+    light.gobo_up = up->direction();
+    if (parallel(light.gobo_up, light.direction)) up->fail("must not be parallel to direction");
+  }
+  if (const auto gobo = o.optional("gobo")) {
+    // The gobo spans tan(cone_deg): it needs a cone narrower than a hemisphere.
+    if (!(light.cone_deg < 90.0f)) o.fail("cone_deg", "must be < 90 for a spot with a gobo");
+    light.gobo = read_gobo(*gobo, base_dir);
+  }
+}
+
+Light read_light(const JsonNode& node, const std::filesystem::path& base_dir) {
+  JsonObject o(node);
+  const JsonNode type = o.required("type");
+  const std::string name = type.string();
+  Light light;
+  if (name == "point") {
+    light.type = LightType::point;
+    light.position = o.required("position").vec3();
+    light.intensity = o.required("intensity").color(at_least(0));
+  } else if (name == "spot") {
+    light.type = LightType::spot;
+    read_spot(o, light, base_dir);
+  } else if (name == "directional") {
+    light.type = LightType::directional;
+    light.direction = o.required("direction").direction();
+    light.irradiance = o.required("irradiance").color(at_least(0));
+  } else {
+    type.fail("must be \"point\", \"spot\" or \"directional\"");
+  }
+  o.finish();
+  return light;
+}
+
+// ---- the scene ---------------------------------------------------------------
+
+// The elements of the optional array `name` (none when it is absent).
+std::vector<JsonNode> elements_of(JsonObject& o, std::string_view name) {
+  const auto array = o.optional(name);
+  return array ? array->elements() : std::vector<JsonNode>{};
+}
+
+void check_format(JsonObject& o) {
+  const JsonNode format = o.required("format");
+  if (format.string() != kFormat) format.fail(std::string("must be \"") + kFormat + "\"");
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& json_text, const std::filesystem::path& file) {
+  const std::string file_name = file.string();
+  const Json json = parse_json_text(json_text, file_name);
+  const JsonNode root(json, file_name, "");
+  JsonObject o(root);
+  check_format(o);
+  const std::filesystem::path base_dir = file.parent_path();
+  Scene scene;
+  scene.source = file;
+  scene.name = file.stem().string();
+  if (const auto name = o.optional("name")) scene.name = name->string();
+  if (const auto camera = o.optional("camera")) scene.camera = read_camera(*camera);
+  if (const auto medium = o.optional("medium")) scene.medium = read_medium(*medium);
+  if (const auto model = o.optional("light_model")) scene.light_model = read_light_model(*model);
+  scene.ambient = o.color_or("ambient", at_least(0), scene.ambient);
+  const auto volumes = elements_of(o, "volumes");
+  const auto lights = elements_of(o, "lights");
+  const auto objects = elements_of(o, "objects");
+  o.finish();  // before loading meshes and images: a misspelt key is the cheaper error
+  for (const JsonNode& n : volumes) scene.volumes.push_back(read_volume(n));
+  for (const JsonNode& n : lights) scene.lights.push_back(read_light(n, base_dir));
+  for (const JsonNode& n : objects) scene.meshes.push_back(read_object(n, base_dir));
+  return scene;
+}
+
+Scene load_scene(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file)) {
+    throw InputError(file.string(), "", "cannot read the scene file");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), file);
+}
+
+}  // namespace airlight

@@ -1,0 +1,405 @@
+#include "core/image_io.hpp"
+#include "scene/test_support.hpp"
+
+#include <airlight/scene.hpp>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace airlight {
+namespace {
+
+using Json = nlohmann::json;
+using scene_test::data_dir;
+using scene_test::throws_input_error;
+using scene_test::well_formed;
+
+// Inline scenes are parsed as if they sat in the test data folder, so that
+// relative paths like "cube.obj" resolve; the file itself need not exist.
+std::string inline_file() { return (data_dir() / "inline.json").string(); }
+
+Scene parse(const Json& json) { return parse_scene(json.dump(), inline_file()); }
+
+Json valid_scene() {
+  std::ifstream in(data_dir() / "valid.json");
+  return Json::parse(in);
+}
+
+void expect_vec(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-6f) {
+  EXPECT_NEAR(glm::distance(actual, expected), 0.0f, tolerance)
+      << "(" << actual.x << ", " << actual.y << ", " << actual.z << ")";
+}
+
+// ---- valid scenes ----------------------------------------------------------
+
+TEST(SceneJson, ValidSceneParsesToTheRightValues) {
+  const auto file = data_dir() / "valid.json";
+  const Scene s = load_scene(file);
+  EXPECT_EQ(s.name, "valid");
+  EXPECT_EQ(s.source, file);
+  expect_vec(s.camera.position, {0, 2, 8});
+  expect_vec(s.camera.look_at, {0, 1, 0});
+  expect_vec(s.camera.up, {0, 1, 0});  // normalized
+  EXPECT_EQ(s.camera.fov_y_deg, 50.0f);
+  EXPECT_EQ(s.camera.near, 0.1f);
+  EXPECT_EQ(s.camera.far, 40.0f);
+  expect_vec(s.medium.sigma_s, {0.04f, 0.05f, 0.06f});
+  expect_vec(s.medium.sigma_a, glm::vec3(0.01f));
+  EXPECT_EQ(s.light_model.type, LightModelType::physical);
+  expect_vec(s.ambient, {0.01f, 0.02f, 0.03f});
+
+  ASSERT_EQ(s.volumes.size(), 1u);
+  expect_vec(s.volumes[0].min, {-1, 0, -1});
+  expect_vec(s.volumes[0].max, {1, 2, 1});
+  expect_vec(s.volumes[0].sigma_s, {0.3f, 0, 0});
+  ASSERT_EQ(s.volumes[0].phase.lobes.size(), 1u);
+  EXPECT_EQ(s.volumes[0].phase.lobes[0].type, PhaseType::murky);
+}
+
+TEST(SceneJson, NestedPhaseSumsFlattenIntoWeightedLobes) {
+  const auto& lobes = load_scene(data_dir() / "valid.json").medium.phase.lobes;
+  ASSERT_EQ(lobes.size(), 3u);
+  EXPECT_EQ(lobes[0].type, PhaseType::rayleigh);
+  EXPECT_FLOAT_EQ(lobes[0].weight, 0.25f);
+  EXPECT_EQ(lobes[1].type, PhaseType::henyey_greenstein);
+  EXPECT_FLOAT_EQ(lobes[1].g, 0.5f);
+  EXPECT_FLOAT_EQ(lobes[1].weight, 0.375f);
+  EXPECT_EQ(lobes[2].type, PhaseType::schlick);
+  EXPECT_FLOAT_EQ(lobes[2].g, -0.2f);
+  EXPECT_FLOAT_EQ(lobes[2].weight, 0.375f);
+}
+
+TEST(SceneJson, LightsAreReadAndDirectionsNormalized) {
+  const Scene s = load_scene(data_dir() / "valid.json");
+  ASSERT_EQ(s.lights.size(), 3u);
+  EXPECT_EQ(s.lights[0].type, LightType::point);
+  expect_vec(s.lights[0].position, {2, 3, 1});
+  expect_vec(s.lights[0].intensity, {50, 40, 30});
+
+  const Light& spot = s.lights[1];
+  EXPECT_EQ(spot.type, LightType::spot);
+  expect_vec(spot.direction, {0, -1, 0});
+  expect_vec(spot.intensity, glm::vec3(200));
+  EXPECT_EQ(spot.cone_deg, 25.0f);
+  EXPECT_EQ(spot.edge_deg, 5.0f);
+  EXPECT_EQ(spot.gobo, nullptr);
+  expect_vec(spot.gobo_up, {0, 0, 1});  // the axis is vertical
+
+  EXPECT_EQ(s.lights[2].type, LightType::directional);
+  expect_vec(s.lights[2].direction, {0, -0.6f, 0.8f});
+  expect_vec(s.lights[2].irradiance, glm::vec3(2));
+}
+
+TEST(SceneJson, ObjectsBecomePlacedMeshes) {
+  const Scene s = load_scene(data_dir() / "valid.json");
+  ASSERT_EQ(s.meshes.size(), 6u);
+  for (const Mesh& mesh : s.meshes) EXPECT_TRUE(well_formed(mesh));
+  EXPECT_EQ(s.meshes[0].name, "objects[0] (teapot)");
+  EXPECT_EQ(s.meshes[4].name, "objects[4] (pillar)");
+  EXPECT_EQ(s.meshes[5].name, "objects[5] (cube.obj)");
+  expect_vec(s.meshes[0].albedo, glm::vec3(0.5f));
+  expect_vec(s.meshes[1].albedo, glm::vec3(0.7f));  // the default
+  expect_vec(s.meshes[5].albedo, {0.6f, 0.6f, 0.5f});
+  // Teapot at scale 2: 2 units tall.
+  float top = 0.0f;
+  for (const glm::vec3& p : s.meshes[0].positions) top = std::max(top, p.y);
+  EXPECT_NEAR(top, 2.0f, 1e-5f);
+  // The cube moved 3 along x.
+  for (const glm::vec3& p : s.meshes[5].positions) EXPECT_GE(p.x, 3.0f);
+  // The plane faces +z at z = -3.
+  for (const glm::vec3& p : s.meshes[3].positions) EXPECT_FLOAT_EQ(p.z, -3.0f);
+  for (const glm::vec3& n : s.meshes[3].normals) expect_vec(n, {0, 0, 1});
+}
+
+TEST(SceneJson, MinimalSceneTakesTheDefaults) {
+  const Scene s = load_scene(data_dir() / "minimal.json");
+  const Camera camera;
+  EXPECT_EQ(s.name, "minimal");
+  EXPECT_EQ(s.camera.position, camera.position);
+  EXPECT_EQ(s.camera.fov_y_deg, camera.fov_y_deg);
+  EXPECT_EQ(s.medium.sigma_s, glm::vec3(0.0f));
+  ASSERT_EQ(s.medium.phase.lobes.size(), 1u);
+  EXPECT_EQ(s.medium.phase.lobes[0].type, PhaseType::isotropic);
+  EXPECT_EQ(s.ambient, glm::vec3(0.0f));
+  EXPECT_TRUE(s.lights.empty());
+  EXPECT_TRUE(s.meshes.empty());
+  EXPECT_TRUE(s.volumes.empty());
+}
+
+TEST(SceneJson, EmptyObjectsListIsValid) {
+  Json j = valid_scene();
+  j["objects"] = Json::array();
+  EXPECT_TRUE(parse(j).meshes.empty());
+}
+
+TEST(SceneJson, SimplifiedLightModelKeepsItsCoefficients) {
+  Json j = valid_scene();
+  j["light_model"] = {{"type", "simplified"}, {"a0", 0.5}, {"a1", 2}};
+  const LightModel model = parse(j).light_model;
+  EXPECT_EQ(model.type, LightModelType::simplified);
+  EXPECT_EQ(model.a0, 0.5f);
+  EXPECT_EQ(model.a1, 2.0f);
+}
+
+TEST(SceneJson, WeightsSummingToOneWithinTheToleranceAreAccepted) {
+  Json j = valid_scene();
+  j["medium"]["phase"] = Json::parse(R"({"type": "sum", "terms": [
+      {"weight": 0.33333, "phase": {"type": "hazy"}},
+      {"weight": 0.66667, "phase": {"type": "isotropic"}}]})");
+  EXPECT_EQ(parse(j).medium.phase.lobes.size(), 2u);
+}
+
+TEST(SceneJson, SpotDefaultsAndLimits) {
+  Json j = valid_scene();
+  j["lights"][1].erase("edge_deg");
+  j["lights"][1]["cone_deg"] = 180;  // a spot may light everything
+  j["lights"][1]["direction"] = {1, -1, 0};
+  const Light spot = parse(j).lights[1];
+  EXPECT_EQ(spot.edge_deg, 0.0f);
+  EXPECT_EQ(spot.cone_deg, 180.0f);
+  expect_vec(spot.gobo_up, {0, 1, 0});  // world up for a tilted axis
+}
+
+TEST(SceneJson, ExplicitGoboUpIsNormalized) {
+  Json j = valid_scene();
+  j["lights"][1]["gobo_up"] = {3, 0, 4};
+  expect_vec(parse(j).lights[1].gobo_up, {0.6f, 0, 0.8f});
+}
+
+TEST(SceneJson, GoboIsReadRelativeToTheSceneFile) {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "airlight_scene_gobo";
+  std::filesystem::create_directories(dir / "maps");
+  write_image(Image(4, 2, {0.5f, 0.25f, 1.0f}), dir / "maps" / "dots.pfm");
+  Json j = valid_scene();
+  j["objects"] = Json::array();
+  j["lights"][1]["gobo"] = "maps/dots.pfm";
+  std::ofstream(dir / "gobo.json") << j.dump();
+  const Light spot = load_scene(dir / "gobo.json").lights[1];
+  ASSERT_NE(spot.gobo, nullptr);
+  EXPECT_EQ(spot.gobo->width, 4);
+  EXPECT_EQ(spot.gobo->height, 2);
+  expect_vec(spot.gobo->at(3, 1), {0.5f, 0.25f, 1.0f});
+  std::filesystem::remove_all(dir);
+}
+
+// ---- bad input: every error names the file and the key ----------------------
+
+// One broken scene: the valid scene with the value at `pointer` replaced by
+// `value` (JSON text), or removed when value is null.
+struct BadCase {
+  const char* name;
+  const char* pointer;
+  const char* value;
+  const char* key;
+};
+
+void PrintTo(const BadCase& c, std::ostream* out) { *out << c.name; }
+
+class BadScene : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadScene, NamesTheFileAndTheKey) {
+  const BadCase& c = GetParam();
+  Json j = valid_scene();
+  const Json::json_pointer pointer(c.pointer);
+  if (c.value) j[pointer] = Json::parse(c.value);
+  else j[pointer.parent_pointer()].erase(pointer.back());
+  EXPECT_TRUE(throws_input_error([&] { parse(j); }, inline_file(), c.key));
+}
+
+constexpr const char* erase = nullptr;
+
+const BadCase kFormat[] = {
+    {"FormatMissing", "/format", erase, "format"},
+    {"FormatWrongVersion", "/format", R"("airlight-scene/2")", "format"},
+    {"FormatNotString", "/format", "1", "format"},
+};
+
+const BadCase kUnknownKeys[] = {
+    {"TopLevel", "/colour", "1", "colour"},
+    {"Camera", "/camera/zoom", "2", "camera.zoom"},
+    {"Medium", "/medium/density", "1", "medium.density"},
+    {"Light", "/lights/1/colour", "1", "lights[1].colour"},
+    {"ConeOnPointLight", "/lights/0/cone_deg", "20", "lights[0].cone_deg"},
+    {"NestedPhase", "/medium/phase/terms/1/phase/terms/0/phase/k", "0.1",
+     "medium.phase.terms[1].phase.terms[0].phase.k"},
+    {"GOnIsotropic", "/volumes/0/phase", R"({"type": "isotropic", "g": 0.2})", "volumes[0].phase.g"},
+    {"Term", "/medium/phase/terms/0/wieght", "0.1", "medium.phase.terms[0].wieght"},
+    {"Volume", "/volumes/0/center", "[0, 0, 0]", "volumes[0].center"},
+    {"Object", "/objects/1/radius2", "1", "objects[1].radius2"},
+    {"KeyOfAnotherShape", "/objects/2/radius", "1", "objects[2].radius"},
+    {"A0OnPhysicalModel", "/light_model/a0", "1", "light_model.a0"},
+};
+
+const BadCase kWrongTypes[] = {
+    {"CameraNotObject", "/camera", "[1, 2]", "camera"},
+    {"VectorNotArray", "/camera/position", R"("here")", "camera.position"},
+    {"VectorTooShort", "/camera/position", "[1, 2]", "camera.position"},
+    {"VectorTooLong", "/camera/look_at", "[1, 2, 3, 4]", "camera.look_at"},
+    {"VectorComponentString", "/camera/position/1", R"("a")", "camera.position[1]"},
+    {"NumberBoolean", "/camera/fov_y_deg", "true", "camera.fov_y_deg"},
+    {"NumberNull", "/camera/near", "null", "camera.near"},
+    {"NameNumber", "/name", "3", "name"},
+    {"LightsNotArray", "/lights", "{}", "lights"},
+    {"LightNotObject", "/lights/0", "3", "lights[0]"},
+    {"ObjectsNotArray", "/objects", R"("none")", "objects"},
+    {"VolumesNotArray", "/volumes", "1", "volumes"},
+    {"ColourString", "/medium/scattering", R"("grey")", "medium.scattering"},
+    {"ColourPair", "/lights/0/intensity", "[1, 2]", "lights[0].intensity"},
+    {"SegmentsFraction", "/objects/1/segments", "10.5", "objects[1].segments"},
+    {"SegmentsTooFew", "/objects/1/segments", "3", "objects[1].segments"},
+    {"MeshPathNumber", "/objects/5/mesh", "1", "objects[5].mesh"},
+    {"GoboNotString", "/lights/1/gobo", "7", "lights[1].gobo"},
+    {"PhaseNotObject", "/medium/phase", R"("hg")", "medium.phase"},
+    {"WeightString", "/medium/phase/terms/0/weight", R"("a")", "medium.phase.terms[0].weight"},
+    {"LightTypeNumber", "/lights/0/type", "1", "lights[0].type"},
+};
+
+const BadCase kNonFinite[] = {
+    {"BeyondFloatRange", "/camera/fov_y_deg", "1e39", "camera.fov_y_deg"},
+    {"VectorBeyondFloatRange", "/lights/0/position/0", "-1e300", "lights[0].position[0]"},
+    {"ColourBeyondFloatRange", "/lights/1/intensity", "1e39", "lights[1].intensity"},
+};
+
+const BadCase kOutOfRange[] = {
+    {"FovZero", "/camera/fov_y_deg", "0", "camera.fov_y_deg"},
+    {"Fov180", "/camera/fov_y_deg", "180", "camera.fov_y_deg"},
+    {"FovNegative", "/camera/fov_y_deg", "-10", "camera.fov_y_deg"},
+    {"NearZero", "/camera/near", "0", "camera.near"},
+    {"NearNegative", "/camera/near", "-0.1", "camera.near"},
+    {"FarBelowNear", "/camera/far", "0.05", "camera.far"},
+    {"FarEqualsNear", "/camera/far", "0.1", "camera.far"},
+    {"NegativeScattering", "/medium/scattering", "-0.1", "medium.scattering"},
+    {"NegativeScatteringChannel", "/medium/scattering/1", "-0.01", "medium.scattering[1]"},
+    {"NegativeAbsorption", "/medium/absorption", "-0.01", "medium.absorption"},
+    {"NegativeVolumeScattering", "/volumes/0/scattering/0", "-1", "volumes[0].scattering[0]"},
+    {"NegativeVolumeAbsorption", "/volumes/0/absorption", "-1", "volumes[0].absorption"},
+    {"NegativeIntensityChannel", "/lights/0/intensity/2", "-1", "lights[0].intensity[2]"},
+    {"NegativeSpotIntensity", "/lights/1/intensity", "-200", "lights[1].intensity"},
+    {"NegativeIrradiance", "/lights/2/irradiance", "-2", "lights[2].irradiance"},
+    {"NegativeAmbient", "/ambient/0", "-0.1", "ambient[0]"},
+    {"ConeZero", "/lights/1/cone_deg", "0", "lights[1].cone_deg"},
+    {"ConeAbove180", "/lights/1/cone_deg", "180.5", "lights[1].cone_deg"},
+    {"EdgeNegative", "/lights/1/edge_deg", "-1", "lights[1].edge_deg"},
+    {"EdgeAboveCone", "/lights/1/edge_deg", "26", "lights[1].edge_deg"},
+    {"HgGOne", "/medium/phase/terms/1/phase/terms/0/phase/g", "1",
+     "medium.phase.terms[1].phase.terms[0].phase.g"},
+    {"HgGMinusOne", "/medium/phase/terms/1/phase/terms/0/phase/g", "-1",
+     "medium.phase.terms[1].phase.terms[0].phase.g"},
+    {"HgGRoundingOntoOne", "/medium/phase/terms/1/phase/terms/0/phase/g", "0.99999999999",
+     "medium.phase.terms[1].phase.terms[0].phase.g"},
+    {"SchlickGAboveOne", "/medium/phase/terms/1/phase/terms/1/phase/g", "1.5",
+     "medium.phase.terms[1].phase.terms[1].phase.g"},
+    {"HgWithoutG", "/volumes/0/phase", R"({"type": "henyey_greenstein"})", "volumes[0].phase.g"},
+    {"UnknownPhase", "/volumes/0/phase/type", R"("mie")", "volumes[0].phase.type"},
+    {"WeightsNotSummingToOne", "/medium/phase/terms/0/weight", "0.3", "medium.phase.terms"},
+    {"NestedWeightsNotSummingToOne", "/medium/phase/terms/1/phase/terms/0/weight", "0.4",
+     "medium.phase.terms[1].phase.terms"},
+    {"NegativeWeight", "/medium/phase/terms/0/weight", "-0.25", "medium.phase.terms[0].weight"},
+    {"NoTerms", "/medium/phase/terms", "[]", "medium.phase.terms"},
+    {"SimplifiedNegativeA0", "/light_model", R"({"type": "simplified", "a0": -1, "a1": 1})",
+     "light_model.a0"},
+    {"SimplifiedNegativeA1", "/light_model", R"({"type": "simplified", "a1": -1})",
+     "light_model.a1"},
+    {"SimplifiedBothZero", "/light_model", R"({"type": "simplified", "a0": 0, "a1": 0})",
+     "light_model"},
+    {"UnknownLightModel", "/light_model", R"({"type": "magic"})", "light_model.type"},
+    {"VolumeMinEqualsMax", "/volumes/0/max/1", "0", "volumes[0].max"},
+    {"VolumeNotBox", "/volumes/0/shape", R"("sphere")", "volumes[0].shape"},
+    {"BoxMinAboveMax", "/objects/2/min/0", "6", "objects[2].max"},
+    {"SphereRadiusZero", "/objects/1/radius", "0", "objects[1].radius"},
+    {"CylinderRadiusNegative", "/objects/4/radius", "-0.3", "objects[4].radius"},
+    {"CylinderHeightZero", "/objects/4/height", "0", "objects[4].height"},
+    {"ScaleZero", "/objects/0/scale", "0", "objects[0].scale"},
+    {"ScaleNegative", "/objects/0/scale", "-2", "objects[0].scale"},
+    {"AlbedoAboveOne", "/objects/0/albedo", "1.5", "objects[0].albedo"},
+    {"AlbedoChannelNegative", "/objects/5/albedo/1", "-0.1", "objects[5].albedo[1]"},
+    {"PlaneSizeZero", "/objects/3/size/0", "0", "objects[3].size[0]"},
+    {"ScaleOverflowsGeometry", "/objects/2/scale", "1e38", "objects[2]"},
+    {"SphereTooSmallForFloats", "/objects/1",
+     R"({"shape": "sphere", "center": [1, 1, 1], "radius": 1e-30})", "objects[1]"},
+};
+
+const BadCase kZeroVectors[] = {
+    {"SpotDirection", "/lights/1/direction", "[0, 0, 0]", "lights[1].direction"},
+    {"DirectionalDirection", "/lights/2/direction", "[0, 0, 0]", "lights[2].direction"},
+    {"CameraUp", "/camera/up", "[0, 0, 0]", "camera.up"},
+    {"CameraUpAlongView", "/camera/up", "[0, -1, -8]", "camera.up"},
+    {"LookAtIsPosition", "/camera/look_at", "[0, 2, 8]", "camera.look_at"},
+    {"PlaneNormal", "/objects/3/normal", "[0, 0, 0]", "objects[3].normal"},
+    {"GoboUp", "/lights/1/gobo_up", "[0, 0, 0]", "lights[1].gobo_up"},
+    {"GoboUpAlongAxis", "/lights/1/gobo_up", "[0, 1, 0]", "lights[1].gobo_up"},
+};
+
+const BadCase kObjectsAndLights[] = {
+    {"ShapeAndMesh", "/objects/1/mesh", R"("cube.obj")", "objects[1]"},
+    {"NeitherShapeNorMesh", "/objects/1/shape", erase, "objects[1]"},
+    {"UnknownShape", "/objects/1/shape", R"("torus")", "objects[1].shape"},
+    {"MissingRadius", "/objects/1/radius", erase, "objects[1].radius"},
+    {"MissingBoxMax", "/objects/2/max", erase, "objects[2].max"},
+    {"MissingMeshFile", "/objects/5/mesh", R"("missing.obj")", "objects[5].mesh"},
+    {"UnknownLightType", "/lights/0/type", R"("area")", "lights[0].type"},
+    {"MissingLightType", "/lights/0/type", erase, "lights[0].type"},
+    {"MissingPosition", "/lights/0/position", erase, "lights[0].position"},
+    {"MissingCone", "/lights/1/cone_deg", erase, "lights[1].cone_deg"},
+    {"MissingIrradiance", "/lights/2/irradiance", erase, "lights[2].irradiance"},
+    {"MissingGoboFile", "/lights/1/gobo", R"("missing.png")", "lights[1].gobo"},
+    {"GoboOnWideCone", "/lights/1",
+     R"({"type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "intensity": 1,
+         "cone_deg": 90, "gobo": "missing.png"})",
+     "lights[1].cone_deg"},
+};
+
+std::string case_name(const ::testing::TestParamInfo<BadCase>& info) { return info.param.name; }
+
+INSTANTIATE_TEST_SUITE_P(Format, BadScene, ::testing::ValuesIn(kFormat), case_name);
+INSTANTIATE_TEST_SUITE_P(UnknownKey, BadScene, ::testing::ValuesIn(kUnknownKeys), case_name);
+INSTANTIATE_TEST_SUITE_P(WrongType, BadScene, ::testing::ValuesIn(kWrongTypes), case_name);
+INSTANTIATE_TEST_SUITE_P(NonFinite, BadScene, ::testing::ValuesIn(kNonFinite), case_name);
+INSTANTIATE_TEST_SUITE_P(OutOfRange, BadScene, ::testing::ValuesIn(kOutOfRange), case_name);
+INSTANTIATE_TEST_SUITE_P(ZeroVector, BadScene, ::testing::ValuesIn(kZeroVectors), case_name);
+INSTANTIATE_TEST_SUITE_P(ObjectOrLight, BadScene, ::testing::ValuesIn(kObjectsAndLights),
+                         case_name);
+
+// ---- bad input the table cannot express ------------------------------------
+
+TEST(SceneJson, MalformedJsonReportsTheParsersPosition) {
+  const std::string text = "{\n  \"format\": \"airlight-scene/1\",\n}";
+  EXPECT_TRUE(throws_input_error([&] { parse_scene(text, "bad.json"); }, "bad.json", ""));
+  try {
+    parse_scene(text, "bad.json");
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneJson, NumberOverflowIsAnErrorNamingItsKey) {
+  const std::string text = R"({"format": "airlight-scene/1", "ambient": 1e999})";
+  EXPECT_TRUE(throws_input_error([&] { parse_scene(text, "big.json"); }, "big.json", "ambient"));
+  const std::string nested = R"({"format": "airlight-scene/1", "camera": {"position": [0, -1e999, 0]}})";
+  EXPECT_TRUE(throws_input_error([&] { parse_scene(nested, "big.json"); }, "big.json", "camera.position[1]"));
+}
+
+TEST(SceneJson, DuplicateKeyIsAnError) {
+  const std::string text = R"({"format": "airlight-scene/1", "ambient": 1, "ambient": 2})";
+  EXPECT_TRUE(throws_input_error([&] { parse_scene(text, "dup.json"); }, "dup.json", "ambient"));
+}
+
+TEST(SceneJson, TopLevelMustBeAnObject) {
+  EXPECT_TRUE(throws_input_error([] { parse_scene("[1, 2]", "a.json"); }, "a.json", ""));
+  EXPECT_TRUE(throws_input_error([] { parse_scene("", "a.json"); }, "a.json", ""));
+}
+
+TEST(SceneJson, MissingSceneFileNamesIt) {
+  const auto file = data_dir() / "no_such_scene.json";
+  EXPECT_TRUE(throws_input_error([&] { load_scene(file); }, file.string(), ""));
+}
+
+TEST(SceneJson, ObjErrorsNameTheObjFile) {
+  Json j = valid_scene();
+  j["objects"][5]["mesh"] = "degenerate.obj";
+  EXPECT_TRUE(throws_input_error([&] { parse(j); }, (data_dir() / "degenerate.obj").string(),
+                                 "face 2"));
+}
+
+}  // namespace
+}  // namespace airlight

@@ -1,0 +1,34 @@
+#pragma once
+// The meshes objects are made of (DESIGN §4 "objects"). All are in object
+// space; the caller applies the object's Transform. Conventions as in
+// mesh_build.hpp: counter-clockwise outward winding, unit normals, no
+// degenerate triangles.
+#include <airlight/scene.hpp>
+#include <filesystem>
+#include <glm/vec2.hpp>
+
+namespace airlight::scene_mesh {
+
+// Axis-aligned box; flat faces, so each face has its own 4 vertices.
+Mesh make_box(const glm::vec3& min, const glm::vec3& max);
+
+// UV sphere: `segments` around the y axis, segments/2 rings, one vertex per pole.
+Mesh make_sphere(const glm::vec3& center, float radius, int segments);
+
+// A one-sided rectangle: `size` (x, z extent) in the plane through `center`
+// with unit `normal`; its edges follow world x and z turned by the shortest
+// rotation taking +y to `normal` (a half turn about x for -y).
+Mesh make_plane(const glm::vec3& center, glm::vec2 size, const glm::vec3& normal);
+
+// Capped cylinder along +y from the centre of its base: smooth side, flat caps.
+Mesh make_cylinder(const glm::vec3& base, float radius, float height, int segments);
+
+// The Utah teapot (Newell's 32 bicubic patches), `segments`×`segments` quads
+// per patch, y up, spout toward +x, standing on y = 0 and 1 unit tall.
+Mesh make_teapot(int segments);
+
+// A Wavefront OBJ file; polygons are fanned into triangles. Throws InputError
+// naming the OBJ file, with keys "face N" / "vertex N" (1-based, file order).
+Mesh load_obj(const std::filesystem::path& file);
+
+}  // namespace airlight::scene_mesh

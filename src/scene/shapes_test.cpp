@@ -1,0 +1,140 @@
+#include "scene/mesh_build.hpp"
+#include "scene/shapes.hpp"
+#include "scene/test_support.hpp"
+
+#include <glm/gtc/constants.hpp>
+#include <gtest/gtest.h>
+#include <map>
+#include <utility>
+
+namespace airlight {
+namespace {
+
+using namespace scene_mesh;
+using scene_test::misoriented_fraction;
+using scene_test::signed_volume;
+using scene_test::well_formed;
+
+// Edges (by welded position) used by exactly one triangle: none on a closed surface.
+size_t boundary_edges(Mesh mesh) {
+  weld(mesh, 1e-5f);
+  std::map<std::pair<uint32_t, uint32_t>, int> uses;
+  for (const glm::uvec3& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = t[k], b = t[(k + 1) % 3];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  size_t boundary = 0;
+  for (const auto& [edge, count] : uses) boundary += count == 1;
+  return boundary;
+}
+
+TEST(Shapes, BoxIsClosedWithFlatOutwardFaces) {
+  const Mesh box = make_box({-1, 0, -2}, {1, 3, 2});
+  ASSERT_TRUE(well_formed(box));
+  EXPECT_EQ(box.positions.size(), 24u);
+  EXPECT_EQ(box.triangles.size(), 12u);
+  EXPECT_EQ(misoriented_fraction(box), 0.0);
+  EXPECT_NEAR(signed_volume(box), 2.0 * 3.0 * 4.0, 1e-4);
+  EXPECT_EQ(boundary_edges(box), 0u);
+}
+
+TEST(Shapes, SphereIsClosedRoundAndOutward) {
+  const glm::vec3 center(1, 2, 3);
+  const Mesh sphere = make_sphere(center, 0.5f, 48);
+  ASSERT_TRUE(well_formed(sphere));
+  EXPECT_EQ(sphere.triangles.size(), 2u * 48u * 23u);
+  EXPECT_EQ(misoriented_fraction(sphere), 0.0);
+  EXPECT_EQ(boundary_edges(sphere), 0u);
+  for (size_t i = 0; i < sphere.positions.size(); ++i) {
+    EXPECT_NEAR(glm::distance(sphere.positions[i], center), 0.5f, 1e-5f);
+    EXPECT_GT(glm::dot(sphere.normals[i], glm::normalize(sphere.positions[i] - center)), 0.9999f);
+  }
+  const double exact = 4.0 / 3.0 * glm::pi<double>() * 0.125;
+  EXPECT_NEAR(signed_volume(sphere) / exact, 1.0, 0.01);
+}
+
+TEST(Shapes, SphereWith32SegmentsHasA32EdgeEquator) {
+  const Mesh sphere = make_sphere({0, 0, 0}, 1.0f, 32);
+  size_t on_equator = 0;
+  for (const glm::vec3& p : sphere.positions) on_equator += std::fabs(p.y) < 1e-6f;
+  EXPECT_EQ(on_equator, 32u);
+}
+
+TEST(Shapes, PlaneFacesItsNormalWithTheGivenSize) {
+  const glm::vec3 normal = glm::normalize(glm::vec3(0, 1, 1));
+  const Mesh plane = make_plane({0, 1, 0}, {4, 2}, normal);
+  ASSERT_TRUE(well_formed(plane));
+  ASSERT_EQ(plane.triangles.size(), 2u);
+  EXPECT_EQ(misoriented_fraction(plane), 0.0);
+  for (const glm::uvec3& t : plane.triangles) {
+    const glm::vec3 n = face_normal(plane.positions[t.x], plane.positions[t.y], plane.positions[t.z]);
+    EXPECT_GT(glm::dot(n, normal), 0.9999f);
+  }
+  // The x extent stays along world x (the shortest rotation from +y keeps x).
+  EXPECT_NEAR(glm::distance(plane.positions[0], plane.positions[3]), 4.0f, 1e-5f);
+  EXPECT_NEAR(glm::distance(plane.positions[0], plane.positions[1]), 2.0f, 1e-5f);
+}
+
+TEST(Shapes, PlaneFacingDownIsHalfTurnAboutX) {
+  const Mesh plane = make_plane({0, 0, 0}, {2, 2}, {0, -1, 0});
+  ASSERT_TRUE(well_formed(plane));
+  EXPECT_EQ(misoriented_fraction(plane), 0.0);
+  const glm::uvec3 t = plane.triangles[0];
+  EXPECT_LT(face_normal(plane.positions[t.x], plane.positions[t.y], plane.positions[t.z]).y,
+            -0.9999f);
+  // A half turn about x keeps the plane's x edge along +x.
+  EXPECT_NEAR(plane.positions[3].x - plane.positions[0].x, 2.0f, 1e-6f);
+}
+
+TEST(Shapes, CylinderIsClosedAndHasTheRightVolume) {
+  const Mesh cylinder = make_cylinder({0, 1, 0}, 0.5f, 2.0f, 64);
+  ASSERT_TRUE(well_formed(cylinder));
+  EXPECT_EQ(misoriented_fraction(cylinder), 0.0);
+  EXPECT_EQ(boundary_edges(cylinder), 0u);
+  const double exact = glm::pi<double>() * 0.25 * 2.0;
+  EXPECT_NEAR(signed_volume(cylinder) / exact, 1.0, 0.01);
+  for (const glm::vec3& p : cylinder.positions) {
+    EXPECT_GE(p.y, 1.0f - 1e-6f);
+    EXPECT_LE(p.y, 3.0f + 1e-6f);
+  }
+}
+
+TEST(Shapes, TransformScalesThenRotatesXYZThenTranslates) {
+  Transform t;
+  t.scale = 2.0f;
+  t.rotate_deg = {90, 90, 0};  // X first: +y -> +z; then Y: +z -> +x
+  t.translate = {0, 0, 5};
+  Mesh mesh = make_plane({0, 1, 0}, {1, 1}, {0, 1, 0});
+  apply(t, mesh);
+  ASSERT_TRUE(well_formed(mesh));
+  for (const glm::vec3& n : mesh.normals) EXPECT_NEAR(glm::distance(n, glm::vec3(1, 0, 0)), 0.0f, 1e-6f);
+  glm::vec3 centroid(0.0f);
+  for (const glm::vec3& p : mesh.positions) centroid += p / 4.0f;
+  EXPECT_NEAR(glm::distance(centroid, glm::vec3(2, 0, 5)), 0.0f, 1e-5f);
+}
+
+TEST(Shapes, WeldMergesCoincidentVerticesAndDropsCollapsedTriangles) {
+  MeshBuilder b;
+  const uint32_t a = b.vertex({0, 0, 0}, {0, 0, 1}), c = b.vertex({1, 0, 0}, {0, 0, 1});
+  const uint32_t d = b.vertex({0, 1, 0}, {0, 0, 1}), e = b.vertex({1e-7f, 0, 0}, {1, 0, 1});
+  b.triangle(a, c, d);
+  b.triangle(e, c, d);  // the same triangle through a near-duplicate of a
+  Mesh mesh = b.take("test");
+  weld(mesh, 1e-5f);
+  EXPECT_EQ(mesh.positions.size(), 3u);
+  EXPECT_EQ(mesh.triangles.size(), 2u);
+  ASSERT_TRUE(well_formed(mesh));
+}
+
+TEST(Shapes, BuilderRefusesDegenerateTriangles) {
+  MeshBuilder b;
+  const uint32_t a = b.vertex({0, 0, 0}, {0, 0, 1}), c = b.vertex({1, 0, 0}, {0, 0, 1});
+  const uint32_t d = b.vertex({2, 0, 0}, {0, 0, 1});
+  b.triangle(a, c, d);
+  b.triangle(a, a, c);
+  EXPECT_TRUE(b.mesh().triangles.empty());
+}
+
+}  // namespace
+}  // namespace airlight
