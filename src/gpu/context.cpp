@@ -1,0 +1,99 @@
+#include "gpu/context.hpp"
+
+#include "gpu/gl.hpp"
+
+#include <airlight/error.hpp>
+
+namespace airlight::gpu {
+
+namespace {
+
+const char* const install_hint =
+    "no OpenGL 4.5 core context could be created through EGL. Install Mesa's EGL and drivers "
+    "(Debian: apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri) or a GPU driver that provides "
+    "EGL with OpenGL 4.5";
+
+bool has_extension(const char* list, const std::string& name) {
+  return list && (" " + std::string(list) + " ").find(" " + name + " ") != std::string::npos;
+}
+
+EGLDisplay initialize(EGLDisplay display) {
+  if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr)) return display;
+  return EGL_NO_DISPLAY;
+}
+
+EGLDisplay surfaceless_display() {
+  const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (!has_extension(client, "EGL_MESA_platform_surfaceless")) return EGL_NO_DISPLAY;
+  return initialize(eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr));
+}
+
+EGLDisplay device_display() {
+  const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (!has_extension(client, "EGL_EXT_platform_device")) return EGL_NO_DISPLAY;
+  EGLDeviceEXT devices[16];
+  EGLint count = 0;
+  if (!eglQueryDevicesEXT(16, devices, &count)) return EGL_NO_DISPLAY;
+  for (EGLint i = 0; i < count; ++i)
+    if (EGLDisplay d = initialize(eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr)))
+      return d;
+  return EGL_NO_DISPLAY;
+}
+
+EGLContext create_context(EGLDisplay display) {
+  if (!eglBindAPI(EGL_OPENGL_API)) return EGL_NO_CONTEXT;
+  const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
+                               EGL_CONTEXT_MINOR_VERSION, 5,
+                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                               EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE,
+                               EGL_NONE};
+  // No config: the context renders only into framebuffer objects (EGL_KHR_no_config_context).
+  return eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+}
+
+}  // namespace
+
+Context& Context::headless() {
+  // Never destroyed: tearing EGL down from a static destructor races Mesa's own
+  // exit handlers, and the process is ending anyway.
+  static Context* context = new Context();
+  return *context;
+}
+
+Context::Context() {
+  display_ = surfaceless_display();
+  if (display_ == EGL_NO_DISPLAY) display_ = device_display();
+  if (display_ == EGL_NO_DISPLAY) throw Failure(install_hint);
+  context_ = create_context(display_);
+  if (context_ == EGL_NO_CONTEXT || !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
+    eglTerminate(display_);
+    throw Failure(install_hint);
+  }
+  renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  glEnable(GL_DEBUG_OUTPUT);
+  glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // the message arrives inside the call that caused it
+  glDebugMessageCallback(debug_callback, this);
+}
+
+Context::~Context() {
+  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  eglDestroyContext(display_, context_);
+  eglTerminate(display_);
+}
+
+void Context::debug_callback(GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
+                             const void* self) {
+  // Errors and undefined behaviour fail; performance hints and notifications do not.
+  if (type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR || severity == GL_DEBUG_SEVERITY_HIGH)
+    const_cast<Context*>(static_cast<const Context*>(self))->errors_.push_back(message);
+}
+
+void Context::check(const std::string& where) {
+  if (errors_.empty()) return;
+  std::string text = "OpenGL error in " + where + ":";
+  for (const auto& e : errors_) text += "\n  " + e;
+  errors_.clear();
+  throw Failure(text);
+}
+
+}  // namespace airlight::gpu

@@ -1,0 +1,64 @@
+#pragma once
+// OpenGL 4.5 core through libepoxy, with move-only RAII handles for GL objects.
+#include <epoxy/gl.h>
+
+#include <utility>
+
+namespace airlight::gpu {
+
+// A GL object name that deletes itself; `Delete` frees one name.
+template <void (*Delete)(GLuint)>
+class Object {
+public:
+  Object() = default;
+  explicit Object(GLuint id) : id_(id) {}
+  Object(Object&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+  Object& operator=(Object&& other) noexcept {
+    if (this != &other) {
+      reset();
+      id_ = std::exchange(other.id_, 0);
+    }
+    return *this;
+  }
+  Object(const Object&) = delete;
+  Object& operator=(const Object&) = delete;
+  ~Object() { reset(); }
+
+  GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+  void reset() {
+    if (id_) Delete(id_);
+    id_ = 0;
+  }
+
+private:
+  GLuint id_ = 0;
+};
+
+namespace detail {
+inline void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
+inline void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
+inline void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+inline void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
+inline void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+inline void delete_program(GLuint id) { glDeleteProgram(id); }
+inline void delete_shader(GLuint id) { glDeleteShader(id); }
+}  // namespace detail
+
+using Buffer = Object<detail::delete_buffer>;
+using Texture = Object<detail::delete_texture>;
+using Framebuffer = Object<detail::delete_framebuffer>;
+using VertexArray = Object<detail::delete_vertex_array>;
+using Query = Object<detail::delete_query>;
+using Program = Object<detail::delete_program>;
+using Shader = Object<detail::delete_shader>;
+
+// Immutable-storage buffer of `bytes`, filled from `data` (or left for glNamedBufferSubData).
+Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
+// A 2D (or cube, 2D array, …) texture with immutable storage and nearest/clamp sampling.
+Texture make_texture(GLenum target, GLenum internal_format, int width, int height, int layers = 1);
+Framebuffer make_framebuffer();
+VertexArray make_vertex_array();
+Query make_query(GLenum target);
+
+}  // namespace airlight::gpu

@@ -1,0 +1,82 @@
+#include "gpu/context.hpp"
+#include "gpu/program.hpp"
+#include "gpu/timer.hpp"
+
+#include <airlight/error.hpp>
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace airlight::gpu {
+namespace {
+
+TEST(Gpu, HeadlessContextIsOpenGl45Core) {
+  Context& context = Context::headless();
+  GLint major = 0, minor = 0, profile = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+  EXPECT_GE(major * 10 + minor, 45);
+  EXPECT_TRUE(profile & GL_CONTEXT_CORE_PROFILE_BIT);
+  EXPECT_FALSE(context.renderer().empty());
+  std::printf("renderer: %s\n", context.renderer().c_str());
+}
+
+TEST(Gpu, ComputeProgramWithIncludesAndDefinesWritesABuffer) {
+  Context& context = Context::headless();
+  const Program program = make_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 0.5\n");
+  constexpr int count = 100;
+  const Buffer buffer = make_buffer(count * sizeof(float), nullptr);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
+  glUseProgram(program.id());
+  set_uniform(program, "count", count);
+  PassTimer timer;
+  timer.begin("fill");
+  glDispatchCompute((count + 63) / 64, 1, 1);
+  timer.end();
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> values(count);
+  glGetNamedBufferSubData(buffer.id(), 0, count * sizeof(float), values.data());
+  for (int i = 0; i < count; ++i) EXPECT_EQ(values[i], 0.5f * i * i);
+  const auto times = timer.results();
+  ASSERT_EQ(times.size(), 1u);
+  EXPECT_EQ(times[0].pass, "fill");
+  EXPECT_GE(times[0].seconds, 0.0);
+  context.check("fill");
+}
+
+TEST(Gpu, IncludedFilesAppearOnce) {
+  const std::string text = expand_source("gpu/test_shaders/fill.comp.glsl");
+  EXPECT_EQ(text.rfind("#version 450 core\n", 0), 0u);
+  const auto first = text.find("float square");
+  ASSERT_NE(first, std::string::npos);
+  EXPECT_EQ(text.find("float square", first + 1), std::string::npos);
+}
+
+template <typename F>
+std::string failure_text(F&& f) {
+  try {
+    f();
+  } catch (const Failure& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Gpu, CompileErrorsNameTheFile) {
+  Context::headless();
+  const std::string text = failure_text([] { make_compute_program("gpu/test_shaders/broken.comp.glsl"); });
+  EXPECT_NE(text.find("cannot compile shader gpu/test_shaders/broken.comp.glsl"), std::string::npos) << text;
+  EXPECT_NE(failure_text([] { expand_source("no/such.glsl"); }).find("unknown shader 'no/such.glsl'"), std::string::npos);
+}
+
+TEST(Gpu, GlErrorsBecomeFailures) {
+  Context& context = Context::headless();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 987654);  // not a buffer name: GL_INVALID_OPERATION/VALUE
+  const std::string text = failure_text([&] { context.check("a deliberate misuse"); });
+  EXPECT_NE(text.find("OpenGL error in a deliberate misuse"), std::string::npos) << text;
+  EXPECT_NO_THROW(context.check("nothing"));  // the errors were consumed
+}
+
+}  // namespace
+}  // namespace airlight::gpu

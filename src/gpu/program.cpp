@@ -1,0 +1,129 @@
+#include "gpu/program.hpp"
+
+#include "gpu/shader_sources.hpp"
+
+#include <airlight/error.hpp>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace airlight::gpu {
+
+namespace {
+
+std::string_view embedded(const std::string& name, const std::string& included_from) {
+  const auto& all = embedded_shaders();
+  const auto it = all.find(name);
+  if (it == all.end())
+    throw Failure("unknown shader '" + name + "'" + (included_from.empty() ? "" : " included from " + included_from));
+  return it->second;
+}
+
+// Appends `name` with its includes expanded, each file once. #line keeps the
+// compiler's line numbers true to each file (its source-string number is the
+// file's index in `order`, listed in compile errors).
+void expand(const std::string& name, const std::string& from, std::set<std::string>& seen,
+            std::vector<std::string>& order, std::string& out) {
+  if (!seen.insert(name).second) return;
+  order.push_back(name);
+  const int file_index = static_cast<int>(order.size());
+  static const std::regex include(R"re(^\s*#\s*include\s+"([^"]+)"\s*$)re");
+  std::istringstream in{std::string(embedded(name, from))};
+  std::string line;
+  int number = 0;
+  out += "#line 1 " + std::to_string(file_index) + "\n";
+  while (std::getline(in, line)) {
+    ++number;
+    std::smatch match;
+    if (std::regex_match(line, match, include)) {
+      expand(match[1], name, seen, order, out);
+      out += "#line " + std::to_string(number + 1) + " " + std::to_string(file_index) + "\n";
+    } else {
+      out += line + "\n";
+    }
+  }
+}
+
+std::string expand_with_order(const std::string& name, const std::string& defines, std::vector<std::string>& order) {
+  std::set<std::string> seen;
+  std::string body;
+  expand(name, "", seen, order, body);
+  return "#version 450 core\n" + defines + "\n" + body;
+}
+
+std::string file_list(const std::vector<std::string>& order) {
+  std::string text;
+  for (size_t i = 0; i < order.size(); ++i) text += "\n  source " + std::to_string(i + 1) + ": " + order[i];
+  return text;
+}
+
+std::string info_log(GLuint object, bool program) {
+  GLint length = 0;
+  program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+  program ? glGetProgramInfoLog(object, length, nullptr, log.data())
+          : glGetShaderInfoLog(object, length, nullptr, log.data());
+  return log.c_str();
+}
+
+Shader compile(const Stage& stage, const std::string& defines) {
+  std::vector<std::string> order;
+  const std::string text = expand_with_order(stage.name, defines, order);
+  Shader shader(glCreateShader(stage.type));
+  const char* source = text.c_str();
+  glShaderSource(shader.id(), 1, &source, nullptr);
+  glCompileShader(shader.id());
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+  if (!ok) throw Failure("cannot compile shader " + stage.name + ":\n" + info_log(shader.id(), false) + file_list(order));
+  return shader;
+}
+
+GLint location(const Program& p, const char* name) { return glGetUniformLocation(p.id(), name); }
+
+}  // namespace
+
+std::string expand_source(const std::string& name, const std::string& defines) {
+  std::vector<std::string> order;
+  return expand_with_order(name, defines, order);
+}
+
+Program make_program(std::initializer_list<Stage> stages, const std::string& defines) {
+  Program program(glCreateProgram());
+  std::vector<Shader> shaders;
+  std::string names;
+  for (const auto& stage : stages) {
+    shaders.push_back(compile(stage, defines));
+    glAttachShader(program.id(), shaders.back().id());
+    names += (names.empty() ? "" : " + ") + stage.name;
+  }
+  glLinkProgram(program.id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+  if (!ok) throw Failure("cannot link program " + names + ":\n" + info_log(program.id(), true));
+  return program;
+}
+
+Program make_compute_program(const std::string& name, const std::string& defines) {
+  return make_program({{GL_COMPUTE_SHADER, name}}, defines);
+}
+
+void set_uniform(const Program& p, const char* name, int v) { glProgramUniform1i(p.id(), location(p, name), v); }
+void set_uniform(const Program& p, const char* name, float v) { glProgramUniform1f(p.id(), location(p, name), v); }
+void set_uniform(const Program& p, const char* name, const glm::vec2& v) {
+  glProgramUniform2fv(p.id(), location(p, name), 1, glm::value_ptr(v));
+}
+void set_uniform(const Program& p, const char* name, const glm::vec3& v) {
+  glProgramUniform3fv(p.id(), location(p, name), 1, glm::value_ptr(v));
+}
+void set_uniform(const Program& p, const char* name, const glm::vec4& v) {
+  glProgramUniform4fv(p.id(), location(p, name), 1, glm::value_ptr(v));
+}
+void set_uniform(const Program& p, const char* name, const glm::mat4& v) {
+  glProgramUniformMatrix4fv(p.id(), location(p, name), 1, GL_FALSE, glm::value_ptr(v));
+}
+
+}  // namespace airlight::gpu

@@ -1,0 +1,39 @@
+#pragma once
+// GLSL programs from the embedded sources. A source may `#include "path.glsl"`
+// (a path as embedded_shaders() keys it); each file is included once, so shared
+// optics code needs no include guards. "#version 450 core" and the caller's
+// defines are put in front.
+#include "gpu/gl.hpp"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <initializer_list>
+#include <string>
+#include <utility>
+
+namespace airlight::gpu {
+
+// The full text of an embedded shader with its includes expanded. Throws Failure
+// naming the file for an unknown name or include.
+std::string expand_source(const std::string& name, const std::string& defines = "");
+
+struct Stage {
+  GLenum type;       // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER, …
+  std::string name;  // embedded path
+};
+
+// Compiles and links; a compile or link error throws Failure with the log and the file.
+Program make_program(std::initializer_list<Stage> stages, const std::string& defines = "");
+Program make_compute_program(const std::string& name, const std::string& defines = "");
+
+// Uniforms by name (a name the linker removed is ignored, as GL does).
+void set_uniform(const Program& p, const char* name, int v);
+void set_uniform(const Program& p, const char* name, float v);
+void set_uniform(const Program& p, const char* name, const glm::vec2& v);
+void set_uniform(const Program& p, const char* name, const glm::vec3& v);
+void set_uniform(const Program& p, const char* name, const glm::vec4& v);
+void set_uniform(const Program& p, const char* name, const glm::mat4& v);
+
+}  // namespace airlight::gpu
