@@ -30,15 +30,19 @@ struct Outcome {
   std::string err;
 };
 
-Outcome run(const std::string& args) {
+// Runs the command with `env` ("NAME=value" or empty) in its environment.
+Outcome run_with_env(const std::string& env, const std::string& args) {
   const fs::path err = work_dir() / "stderr.txt";
-  const std::string command = std::string(AIRLIGHT_EXE) + " " + args + " >/dev/null 2>" + err.string();
+  const std::string command =
+      (env.empty() ? "" : "env " + env + " ") + std::string(AIRLIGHT_EXE) + " " + args + " >/dev/null 2>" + err.string();
   const int raw = std::system(command.c_str());
   std::ifstream in(err);
   std::stringstream text;
   text << in.rdbuf();
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
 }
+
+Outcome run(const std::string& args) { return run_with_env("", args); }
 
 fs::path write_file(const std::string& name, const std::string& text) {
   const fs::path file = work_dir() / name;
@@ -108,6 +112,20 @@ TEST(Cli, BadOptionsExitTwoNamingTheOption) {
   EXPECT_EQ(run("render --size 8x6" + out).status, 2);          // no scene
   EXPECT_EQ(run("frobnicate").status, 2);                       // unknown subcommand
   EXPECT_EQ(run("list colours").status, 2);
+}
+
+// Without a usable OpenGL driver a GPU method fails with exit 1 and says what to
+// install. Two ways to lose the driver: Mesa finds no DRI driver, or libglvnd
+// finds no EGL vendor at all.
+TEST(Cli, NoOpenGlContextExitsOneSayingWhatToInstall) {
+  const std::string args = "render --builtin teapot_spot --method raymarch --size 8x6 --out " +
+                           (work_dir() / "gl.pfm").string();
+  for (const char* env : {"LIBGL_DRIVERS_PATH=/nonexistent", "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json"}) {
+    const Outcome o = run_with_env(env, args);
+    EXPECT_EQ(o.status, 1) << env << "\n" << o.err;
+    EXPECT_NE(o.err.find("no OpenGL 4.5 core context"), std::string::npos) << env << "\n" << o.err;
+    EXPECT_NE(o.err.find("apt-get install"), std::string::npos) << env << "\n" << o.err;
+  }
 }
 
 TEST(Cli, ListNamesMethodsAndScenes) {

@@ -1,10 +1,14 @@
 #pragma once
-// GPU time per pass from GL_TIME_ELAPSED queries (DESIGN §3: every method reports
-// its GPU time per pass). Passes do not nest; results are read once, after the frame.
+// Time per pass (DESIGN §3: every method reports its GPU time per pass). On a
+// GPU: GL_TIME_ELAPSED queries. On llvmpipe the queries do not see compute
+// dispatches (and report garbage for draws), but there the CPU is the GPU: each
+// pass is bracketed by glFinish and timed by the wall clock instead. Passes do
+// not nest; results are read once, after the frame.
 #include "gpu/gl.hpp"
 
 #include <airlight/method.hpp>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -12,6 +16,7 @@ namespace airlight::gpu {
 
 class PassTimer {
 public:
+  PassTimer();
   void begin(const std::string& pass);
   void end();
   // Waits for the queries and returns seconds per pass, in the order begun.
@@ -20,8 +25,11 @@ public:
 private:
   struct Pending {
     std::string pass;
-    Query query;
+    Query query;                                 // GPU clock
+    std::chrono::steady_clock::time_point start; // software renderer: wall clock
+    double seconds = 0.0;
   };
+  bool wall_clock_;
   std::vector<Pending> pending_;
 };
 

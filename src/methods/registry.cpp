@@ -1,4 +1,6 @@
 // Every method registers here with one line (DESIGN §3).
+#include "methods/interleaved/interleaved_method.hpp"
+#include "methods/raymarch/raymarch_method.hpp"
 #include "methods/reference/reference_method.hpp"
 
 #include <airlight/error.hpp>
@@ -9,6 +11,8 @@ namespace airlight {
 const std::vector<MethodInfo>& registered_methods() {
   static const std::vector<MethodInfo> all{
       methods::reference_method(),
+      methods::raymarch_method(),
+      methods::interleaved_method(),
   };
   return all;
 }

@@ -18,31 +18,6 @@ namespace {
 
 glm::dvec3 at(const Ray& ray, double x) { return ray.origin + x * ray.dir; }
 
-// Parameters t where the line origin + t·dir meets the double cone of half-angle
-// `angle` around `axis` with apex `apex`: (w·a)² = cos²α |w|², w = x - apex.
-// Both nappes and the apex itself are returned: a spurious break is harmless.
-std::vector<double> cone_crossings(const Ray& ray, const glm::dvec3& apex, const glm::dvec3& axis,
-                                   double angle) {
-  const double c2 = std::cos(angle) * std::cos(angle);
-  const glm::dvec3 w = ray.origin - apex;
-  const double da = glm::dot(ray.dir, axis), wa = glm::dot(w, axis);
-  const double A = da * da - c2;
-  const double B = wa * da - c2 * glm::dot(w, ray.dir);
-  const double C = wa * wa - c2 * glm::dot(w, w);
-  const double scale = std::max({std::abs(A), std::abs(B), 1e-300});
-  if (std::abs(A) <= 1e-14 * scale) {  // the ray is parallel to a generator
-    if (std::abs(B) > 0.0) return {-C / (2.0 * B)};
-    return {};
-  }
-  const double disc = B * B - A * C;
-  if (disc < 0.0) return {};
-  // Stable roots of A t² + 2B t + C = 0.
-  const double q = -(B + std::copysign(std::sqrt(disc), B));
-  std::vector<double> roots{q / A};
-  if (q != 0.0) roots.push_back(C / q);
-  return roots;
-}
-
 // The 1/r² peak at the point of closest approach to a point or spot light.
 std::vector<double> closest_approach_breaks(const Ray& ray, const glm::dvec3& light, double span) {
   const glm::dvec3 delta = light - ray.origin;
@@ -50,14 +25,18 @@ std::vector<double> closest_approach_breaks(const Ray& ray, const glm::dvec3& li
   return falloff_breaks(tc, glm::length(delta - tc * ray.dir), span);
 }
 
-std::vector<double> spot_breaks(const Ray& ray, const Light& light) {
+// The ends of the parts of [t0, t1] inside the spot's cone and inside its
+// inner cone (cone - edge), where the smooth edge starts: the cone factor has
+// a jump or a kink there.
+std::vector<double> spot_breaks(const Ray& ray, const Light& light, double t0, double t1) {
   const double cone = light.cone_deg * std::numbers::pi / 180.0;
   const double inner = cone - light.edge_deg * std::numbers::pi / 180.0;
   const glm::dvec3 apex(light.position), axis = glm::normalize(glm::dvec3(light.direction));
   std::vector<double> breaks;
   for (double angle : {cone, inner}) {
-    if (angle <= 0.0 || angle >= std::numbers::pi) continue;
-    for (double t : cone_crossings(ray, apex, axis, angle)) breaks.push_back(t);
+    if (angle <= 0.0) continue;  // no inner cone: the edge reaches the axis
+    const ConeIntervals lit = cone_intervals(apex, axis, angle, ray.origin, ray.dir, t0, t1);
+    for (int i = 0; i < lit.count; ++i) breaks.insert(breaks.end(), {lit.piece[i].x, lit.piece[i].y});
   }
   return breaks;
 }
@@ -74,7 +53,7 @@ std::vector<double> breakpoints(const Scene& scene, const Light& light, const Ra
     for (double t : closest_approach_breaks(ray, glm::dvec3(light.position), span)) breaks.push_back(t);
   }
   if (light.type == LightType::spot)
-    for (double t : spot_breaks(ray, light)) breaks.push_back(t);
+    for (double t : spot_breaks(ray, light, t0, t1)) breaks.push_back(t);
   std::erase_if(breaks, [&](double t) { return !(t >= t0 && t <= t1); });
   std::sort(breaks.begin(), breaks.end());
   const double merge = 1e-12 * span;

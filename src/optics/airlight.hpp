@@ -28,8 +28,8 @@ struct QuadratureSettings {
 };
 
 // ∫_{t0}^{t1} V(x)·e(x) dx per channel (t1 finite; 0 if t1 <= t0). Panels break
-// at volume crossings, at the spot's cone and inner-edge cones (line–cone
-// intersections, apex and both nappes included), at the foot of the
+// at volume crossings, at the ends of the parts inside the spot's cone and its
+// inner-edge cone (cone_intervals, light.hpp), at the foot of the
 // perpendicular from a point or spot light with geometric grading around it (1/r²
 // peaks there), and into min_segments even panels; then globally adaptive G7K15
 // in double precision. Where V differs between neighbouring nodes of a panel, the

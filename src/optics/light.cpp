@@ -1,6 +1,7 @@
 #include "optics/light.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -19,15 +20,41 @@ double smoothstep01(double t) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-// The gobo's right and up axes (DESIGN §1). If gobo_up is parallel to the axis
-// (the loader prevents it) another world axis stands in, so the frame is never NaN.
-void gobo_frame(const Light& light, glm::dvec3& right, glm::dvec3& up) {
-  const glm::dvec3 axis = spot_axis(light);
-  glm::dvec3 side = glm::cross(axis, glm::dvec3(light.gobo_up));
-  if (glm::dot(side, side) < 1e-24) side = glm::cross(axis, glm::dvec3(0, 0, 1));
-  if (glm::dot(side, side) < 1e-24) side = glm::cross(axis, glm::dvec3(1, 0, 0));
-  right = glm::normalize(side);
-  up = glm::cross(right, axis);
+// Angle in [0, π] between `axis` and `v`: atan2(|a×v|, a·v) keeps it accurate
+// near 0 and π and for a `v` that is unit only to rounding, where acos(a·v)
+// loses digits.
+double angle_between(const glm::dvec3& axis, const glm::dvec3& v) {
+  return std::atan2(glm::length(glm::cross(axis, v)), glm::dot(axis, v));
+}
+
+// Parameters s where the line p + s·dir meets the double cone of half-angle
+// `angle` around unit `axis` with its apex at the origin: sin²α (v·a)² = cos²α |v⊥|²,
+// v = p + s·dir, v⊥ = v - (v·a)a, i.e. A s² + 2B s + C = 0. Eberly's form
+// (v·a)² = cos²α |v|² has the coefficient (dir·a)² - cos²α, which cancels for
+// narrow cones and near-axis lines; the v⊥ form keeps both terms small there.
+// The discriminant B² - AC is expanded by hand: its sin⁴α terms cancel exactly,
+// leaving cos²α (sin²α |da·p⊥ - pa·d⊥|² - cos²α |p⊥ × d⊥|²). Computed as
+// B² - AC it would lose half its digits whenever the two roots are close
+// compared with their distance from p — near α = 90°, where the two nappes
+// merge into one plane, a line crosses both almost at once. Roots by the
+// stable formula (Numerical Recipes §5.6). No thresholds: a negative
+// discriminant (a line missing the cone, or a double root at the apex that
+// rounding made complex) counts as 0, which keeps the apex; a missing root
+// (A = 0: parallel to a generator) yields s = 0. Spurious roots only add
+// harmless bounds.
+std::array<double, 2> double_cone_roots(const glm::dvec3& p, const glm::dvec3& dir,
+                                        const glm::dvec3& axis, double angle) {
+  const double sn = std::sin(angle), cs = std::cos(angle);
+  const double s2 = sn * sn, c2 = cs * cs;
+  const double pa = glm::dot(p, axis), da = glm::dot(dir, axis);
+  const glm::dvec3 p_perp = p - pa * axis, d_perp = dir - da * axis;
+  const double A = s2 * da * da - c2 * glm::dot(d_perp, d_perp);
+  const double B = s2 * pa * da - c2 * glm::dot(p_perp, d_perp);
+  const double C = s2 * pa * pa - c2 * glm::dot(p_perp, p_perp);
+  const glm::dvec3 e = da * p_perp - pa * d_perp, m = glm::cross(p_perp, d_perp);
+  const double disc = c2 * (s2 * glm::dot(e, e) - c2 * glm::dot(m, m));
+  const double q = -(B + std::copysign(std::sqrt(std::max(disc, 0.0)), B));
+  return {A != 0.0 ? q / A : 0.0, q != 0.0 ? C / q : 0.0};
 }
 
 bool inside_unit_square(const glm::dvec2& uv) {
@@ -42,13 +69,47 @@ glm::dvec3 gobo_colour(const Light& light, const glm::dvec3& dir) {
 
 }  // namespace
 
+void gobo_frame(const Light& light, glm::dvec3& right, glm::dvec3& up) {
+  const glm::dvec3 axis = spot_axis(light);
+  glm::dvec3 side = glm::cross(axis, glm::dvec3(light.gobo_up));
+  if (glm::dot(side, side) < 1e-24) side = glm::cross(axis, glm::dvec3(0, 0, 1));
+  if (glm::dot(side, side) < 1e-24) side = glm::cross(axis, glm::dvec3(1, 0, 0));
+  right = glm::normalize(side);
+  up = glm::cross(right, axis);
+}
+
 double spot_cone(const Light& light, const glm::dvec3& dir) {
-  const double cos_angle = std::clamp(glm::dot(spot_axis(light), dir), -1.0, 1.0);
-  const double angle = std::acos(cos_angle);
+  const double angle = angle_between(spot_axis(light), dir);
   const double cone = radians(light.cone_deg);
   const double edge = radians(light.edge_deg);
   if (edge <= 0.0) return angle <= cone ? 1.0 : 0.0;  // Nilsson eq. 2.9: hard cut
   return smoothstep01((cone - angle) / edge);          // 1 at cone - edge, 0 at cone
+}
+
+ConeIntervals cone_intervals(const glm::dvec3& apex, const glm::dvec3& axis, double half_angle,
+                             const glm::dvec3& origin, const glm::dvec3& dir, double t0, double t1) {
+  ConeIntervals lit;
+  if (!(t1 > t0)) return lit;
+  // Roots about the foot of the perpendicular from the apex, so that their
+  // rounding scales with the line's distance from the apex, not the origin's.
+  const glm::dvec3 w = origin - apex;
+  const double foot = -glm::dot(w, dir);
+  const std::array<double, 2> s = double_cone_roots(w + foot * dir, dir, axis, half_angle);
+  const double r0 = std::clamp(foot + s[0], t0, t1), r1 = std::clamp(foot + s[1], t0, t1);
+  const std::array<double, 4> bounds{t0, std::min(r0, r1), std::max(r0, r1), t1};
+  // The lit set's boundary (angle = α, or the apex) lies on the double cone, so
+  // between consecutive bounds the angle never crosses α: each piece is lit or
+  // dark as a whole, and its midpoint tells which. That picks the nappe and
+  // covers α >= π/2 without case analysis.
+  for (int k = 0; k < 3; ++k) {
+    const double a = bounds[k], b = bounds[k + 1];
+    if (!(b > a) || angle_between(axis, w + 0.5 * (a + b) * dir) > half_angle) continue;
+    if (lit.count > 0 && lit.piece[lit.count - 1].y == a)
+      lit.piece[lit.count - 1].y = b;  // continues the previous piece across a spurious bound
+    else
+      lit.piece[lit.count++] = {a, b};  // at most lit, dark, lit: two pieces
+  }
+  return lit;
 }
 
 glm::dvec2 gobo_uv(const Light& light, const glm::dvec3& dir) {

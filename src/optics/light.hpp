@@ -2,6 +2,7 @@
 // What a light sends toward a point: radiant intensity I(ω) of point and spot
 // lights (cone, smooth edge, gobo), and the distance attenuation of each light model.
 #include <airlight/scene.hpp>
+#include <array>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -10,6 +11,30 @@ namespace airlight::optics {
 // Spot cone factor in [0, 1] for the angle between the axis and `dir` (unit,
 // from the light): 1 inside cone_deg - edge_deg, smoothstep down to 0 at cone_deg.
 double spot_cone(const Light& light, const glm::dvec3& dir);
+
+// The part of the segment [t0, t1] of the line origin + t·dir inside the cone
+// of apex `apex`, unit `axis` and half-angle `half_angle` (radians): the points x
+// with angle(axis, x - apex) <= half_angle, the lit set of spot_cone's hard cut
+// (Nilsson §2.5, eq. 2.9: "determine the interval on the eye ray that is inside
+// the cone", by the line–cone intersection of Eberly [22] there). One-sided:
+// the backward nappe is dark; from half_angle > π/2 on, the lit set is the
+// complement of the backward cone of half-angle π - half_angle, and a line may
+// cross that dark cone, leaving two pieces. `dir` is unit. Pieces have positive
+// length and come in ascending order; isolated points (a tangent line, a line
+// through the apex outside the cone) are dropped. Degenerate lines are handled
+// without thresholds: along the axis, through the apex, parallel to a
+// generator, half_angle = π/2 (a half-space) or >= π (all of space).
+struct ConeIntervals {
+  int count = 0;                      // 0, 1 or 2
+  std::array<glm::dvec2, 2> piece{};  // [x, y]: t0 <= x < y <= t1
+};
+ConeIntervals cone_intervals(const glm::dvec3& apex, const glm::dvec3& axis, double half_angle,
+                             const glm::dvec3& origin, const glm::dvec3& dir, double t0, double t1);
+
+// The gobo's right and up axes (DESIGN §1): right = normalize(axis × gobo_up),
+// up = right × axis. If gobo_up is parallel to the axis (the loader prevents it)
+// another world axis stands in, so the frame is never NaN.
+void gobo_frame(const Light& light, glm::dvec3& right, glm::dvec3& up);
 
 // Gobo texture coordinates of `dir` (unit, from the light): u, v in [0, 1] over
 // the square circumscribing the cone (tan of the angles off the axis scaled by

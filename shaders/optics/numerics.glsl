@@ -1,0 +1,48 @@
+// Numerical helpers shared by the optics twins.
+#include "optics/constants.glsl"
+
+// atan(t) for t in [0, 1] to ~2 ulp (Cephes atanf: reduction at tan(π/8),
+// odd minimax polynomial, peak relative error 1.9e-7). GLSL's atan may be off
+// by 4096 ulp (and llvmpipe's is off by ~300 ulp), which shifts a spot's smooth
+// edge by ~1e-4 of its width and the Sun et al. ξ range by as much.
+float atan_unit(float t) {
+  float base = 0.0;
+  if (t > 0.41421356) {  // tan(π/8)
+    base = 0.25 * PI;
+    t = (t - 1.0) / (t + 1.0);
+  }
+  float z = t * t;
+  return base + ((((8.05374449538e-2 * z - 1.38776856032e-1) * z + 1.99777106478e-1) * z
+                  - 3.33329491539e-1) * z * t + t);
+}
+
+// atan2(y, x) in [-π, π] with full float relative precision: the argument of
+// atan_unit is min/max of |x| and |y|, so no quotient overflows.
+float atan2_accurate(float y, float x) {
+  float ax = abs(x), ay = abs(y);
+  if (ax == 0.0 && ay == 0.0) return 0.0;
+  float a = ay <= ax ? atan_unit(ay / ax) : 0.5 * PI - atan_unit(ax / ay);
+  if (x < 0.0) a = PI - a;
+  return y < 0.0 ? -a : a;
+}
+
+// Angle in [0, π] between two vectors of any length: atan2(|a×b|, a·b) keeps
+// full relative precision at every angle, unlike acos(a·b) near 0 and π.
+float angle_between(vec3 a, vec3 b) {
+  return atan2_accurate(length(cross(a, b)), dot(a, b));
+}
+
+// log(1 + x) and exp(x) - 1 for x >= 0: a Taylor polynomial below 1e-2 (error
+// < x⁵/5 relative, below ε) where the direct forms cancel; GLSL has neither.
+float log1p_nonneg(float x) {
+  return x < 1e-2 ? x * (1.0 - x * (0.5 - x * (1.0 / 3.0 - 0.25 * x))) : log(1.0 + x);
+}
+float expm1_nonneg(float x) {
+  return x < 1e-2 ? x * (1.0 + x * (0.5 + x * (1.0 / 6.0 + x / 24.0))) : exp(x) - 1.0;
+}
+
+// sqrt(1 + w²) = 1/cos(atan w) without overflow for w up to the float maximum.
+float sec_of_atan(float w) {
+  w = abs(w);
+  return w > 1.0 ? w * sqrt(1.0 + 1.0 / (w * w)) : sqrt(1.0 + w * w);
+}

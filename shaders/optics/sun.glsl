@@ -1,0 +1,97 @@
+// GLSL twin of the Sun et al. 2005 airlight in src/optics/closed_form.cpp
+// (Kingston eqs. 36-40): the unoccluded single scattering of one isotropic
+// point light along a view segment in a homogeneous medium, isotropic phase.
+// Evaluated in the shader by Gauss–Legendre quadrature (the table variant is
+// separate). Tested against the C++ by src/gpu/optics_twin_test.cpp.
+#include "optics/numerics.glsl"
+#include "optics/light.glsl"
+
+// 12-point Gauss–Legendre on [-1, 1]: the positive abscissae and their weights.
+const float SUN_GL_X[6] = float[](0.981560634247, 0.904117256370, 0.769902674194,
+                                  0.587317954287, 0.367831498998, 0.125233408511);
+const float SUN_GL_W[6] = float[](0.047175336387, 0.106939325995, 0.160078328543,
+                                  0.203167426723, 0.233492536538, 0.249147045813);
+
+// Beyond u·(tan ξ - tan ξ_lo) = 16 the integrand is below e^-16 of its start:
+// the dropped tail is below e^(1-16) ≈ 3e-7 of the integral (it is bounded by
+// e^-16/(u sec² ξ_cut) and the first e-fold holds at least e^-1/(u sec² ξ_cut)).
+const float SUN_CUTOFF = 16.0;
+
+// J = ∫_{ξlo}^{ξlo+dxi} exp(-u (tan ξ - w_lo)) dξ with w_lo = tan ξlo >= 0,
+// dw = tan(ξlo + dxi) - w_lo >= 0 (+∞ allowed), dxi <= π/2 - ξlo; u >= 0.
+// Plain Gauss–Legendre in ξ converges only as 1/N² when the range nears π/2
+// (exp(-u/η), η = π/2 - ξ, has structure at every scale from u to 1: 8e-4 with
+// 16 nodes at u = 2e-3), so the range is split where tan ξ = 1:
+//   A: ξ up to tan ξ = 1, in ξ, with tan ξ - w_lo = tan δ (1 + w_lo²)/(1 - w_lo tan δ)
+//      (δ = ξ - ξlo: no cancellation);
+//   B: beyond, in s = ln(tan ξ / w_b): dξ = ds/(w + 1/w), whose poles stay π/2
+//      off the real axis at every scale, and exp(-u(w - w_lo)) is entire.
+// 12 nodes on each part (one loop): ≤ 1.1e-5 relative for sun_F over u in
+// [0, 50], v in [0, π/2) (in float on the CPU; the GPU test measures its own).
+float sun_angular(float u, float w_lo, float dw, float dxi) {
+  if (!(u > 1e-20)) return dxi;  // J = dxi - O(u·ln(1/u))
+  float dw_cut = min(dw, SUN_CUTOFF / u);
+  float a_len = w_lo < 1.0 ? min(dw_cut, 1.0 - w_lo) : 0.0;  // part A's range in tan ξ
+  float len_a = a_len == dw ? dxi : atan2_accurate(a_len, 1.0 + w_lo * (w_lo + a_len));
+  float w_b = max(w_lo + a_len, 1.0);                        // part B starts here
+  float len_b = dw_cut > a_len ? log1p_nonneg((dw_cut - a_len) / w_b) : 0.0;
+  float k = 1.0 + w_lo * w_lo;
+  float sum_a = 0.0, sum_b = 0.0;
+  for (int i = 0; i < 6; ++i)
+    for (float side = -1.0; side <= 1.0; side += 2.0) {
+      float t = 0.5 + 0.5 * side * SUN_GL_X[i];
+      float tan_d = tan(t * len_a);
+      sum_a += SUN_GL_W[i] * exp(-u * tan_d * k / (1.0 - w_lo * tan_d));
+      float s = t * len_b, w = w_b * exp(s);
+      sum_b += SUN_GL_W[i] * exp(-u * (a_len + w_b * expm1_nonneg(s))) / (w + 1.0 / w);
+    }
+  return 0.5 * (len_a * sum_a + len_b * sum_b);
+}
+
+// Sun et al.'s F(u, v) = ∫_0^v exp(-u tan ξ) dξ (Kingston eq. 40), u >= 0,
+// 0 <= v <= π/2 (v at or past π/2 in float integrates to the cutoff).
+float sun_F(float u, float v) {
+  float c = cos(v);
+  return sun_angular(u, 0.0, c > 0.0 ? sin(v) / c : positive_infinity(), v);
+}
+
+// tan ξ at a point whose offset along the ray from the foot of the perpendicular
+// is e, at distance r from the light: (e + r)/r0, written as r0/(r - e) for
+// e < 0 where e + r cancels.
+float sun_tan_xi(float e, float r0, float r) { return e >= 0.0 ? (e + r) / r0 : r0 / (r - e); }
+
+// The segment x in [0, d] with the foot of the perpendicular from the light at
+// x = xs, at distance r0: Kingston eqs. 36-39 with x - xs = r0 tan(2ξ - π/2),
+// as ONE integral A0·e^{-σt d_lv}·∫ exp(-σt r0 (tan ξ - tan ξ0)) dξ (the
+// difference F(A1, A2) - F(A1, γ/2) cancels catastrophically at large σt d_lv,
+// seeds README). The ξ range starts at ξ0 = γ/2 and spans half the angle the
+// segment subtends at the light, from atan2 of cross and dot (as the C++).
+// r0 is clamped at MIN_LIGHT_DISTANCE, so a light on the ray stays finite (the
+// C++ clamps r instead: the two differ only when the light is within 1 µm of the ray).
+float sun_segment(float sigma_s, float sigma_t, float I0, float xs, float r0, float d) {
+  if (!(d > 0.0)) return 0.0;
+  r0 = max(r0, MIN_LIGHT_DISTANCE);
+  float d_lv = length(vec2(xs, r0)), r_d = length(vec2(d - xs, r0));
+  float w_lo = sun_tan_xi(-xs, r0, d_lv), w_hi = sun_tan_xi(d - xs, r0, r_d);
+  float half_angle = 0.5 * atan2_accurate(r0 * d, r0 * r0 + xs * (xs - d));
+  // tan ξ1 - tan ξ0 = sin(ξ1 - ξ0)/(cos ξ0 cos ξ1): no cancellation for short segments.
+  float dw = sin(half_angle) * sec_of_atan(w_lo) * sec_of_atan(w_hi);
+  float A0 = sigma_s * I0 / (2.0 * PI * r0);  // Kingston's A0, e^{-σt d_lv cos γ} moved inside
+  return A0 * exp(-sigma_t * d_lv) * sun_angular(sigma_t * r0, w_lo, dw, half_angle);
+}
+
+// optics::sun_airlight(σs, σt, I0, d_lv, γ, d_vp): d_lv the eye–light distance,
+// gamma the angle between the view ray and the direction to the light, d_vp the
+// length of the view segment.
+float sun_airlight(float sigma_s, float sigma_t, float I0, float d_lv, float gamma, float d_vp) {
+  return sun_segment(sigma_s, sigma_t, I0, d_lv * cos(gamma), d_lv * abs(sin(gamma)), d_vp);
+}
+
+// The same for a ray (origin, unit dir), a light position and the segment [0, d]
+// (optics::sun_airlight's vector form): r0 = |Δ - xs·dir| (no cancellation, unlike
+// sqrt(|Δ|² - xs²) of Nilsson eq. 2.16).
+float sun_airlight_ray(float sigma_s, float sigma_t, float I0, vec3 origin, vec3 dir, vec3 light, float d) {
+  vec3 delta = light - origin;
+  float xs = dot(delta, dir);
+  return sun_segment(sigma_s, sigma_t, I0, xs, length(delta - xs * dir), d);
+}

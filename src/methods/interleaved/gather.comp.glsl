@@ -1,0 +1,93 @@
+// One direction of interleaved sampling's separable sum (Tóth 2009 §4.1): each
+// pixel adds the partial sums of M consecutive pixels of its row (or column) —
+// the window around it, shifted inside the image at its borders. M consecutive
+// pixels hold every residue x mod M once, so after a horizontal and a vertical
+// pass each pixel covers all M² residues q, i.e. all N sample indices.
+//
+// Depth-aware: a neighbour whose G-buffer distance differs from this pixel's by
+// more than depth_threshold (relative) lies across a silhouette, where its ray
+// marches another interval. The window first moves, among the M windows of M
+// pixels that contain the pixel, to the one with the most neighbours on the
+// pixel's own surface, so that beside a silhouette it keeps all M residues
+// when that side is M pixels wide; neighbours still across are left out and
+// the accepted partial sums scaled by M / accepted (the missing residues'
+// samples replaced by the mean of the others'), so shafts do not bleed across
+// silhouettes. Pixels outside a too-small image count as left out. (teapot_spot,
+// N = 64, sum gather, rRMSE in the teapot's silhouette band: uniform steps
+// 0.27 plain, 0.21 by exclusion alone, 0.17 with the moving window; equiangular
+// 0.22, 0.036, 0.035.)
+//
+// Normalized (gather=normalized, not in Tóth): the partial sums come divided by
+// each pixel's light guide G (march.glsl: the unshadowed ∫I/r² of its ray), the
+// vertical pass multiplies the sum by the pixel's own G. Interleaving assumes
+// the pixels of a window see nearly the same ray (Tóth §4.1); next to a light's
+// image, L_air ∝ 1/h changes by large factors from pixel to pixel and a plain
+// sum blurs the peak and spreads it over the cone's edge, whatever N. G carries
+// that change exactly, so what the window shares is only the smooth remainder
+// (σs·p, V, extinction). Neighbours whose rays no light reaches (G = 0, w = 0)
+// are left out like those across silhouettes.
+#include "methods/raymarch/march.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform writeonly image2D gathered;
+layout(binding = BINDING_PARTIAL) uniform sampler2D partial_sums;
+
+uniform int block;              // M
+uniform bool vertical;          // false: along rows, true: along columns
+uniform bool depth_aware;
+uniform float depth_threshold;  // relative to this pixel's distance
+uniform bool normalized;        // partial sums divided by the light guide
+
+bool same_surface(ivec2 neighbour, ivec2 pixel, float distance) {
+  if (!depth_aware || neighbour == pixel) return true;
+  return abs(surface_distance(neighbour) - distance) <= depth_threshold * distance;
+}
+
+// Whether the partial sum at `neighbour` joins this pixel's: on the same
+// surface, and (normalized) reached by some light.
+bool joins(ivec2 neighbour, ivec2 pixel, float distance) {
+  return texelFetch(partial_sums, neighbour, 0).w != 0.0 && same_surface(neighbour, pixel, distance);
+}
+
+// The first pixel (along the axis) of this pixel's window of M: of the M
+// windows that contain it and fit in the image, the one with the most joining
+// pixels, the centred one on ties. Next to a silhouette the window thus lies on
+// the pixel's side when that side is M pixels wide, and keeps every residue.
+int window_start(ivec2 pixel, ivec2 axis, int along, int size, float distance) {
+  int centred = clamp(along - (block - 1) / 2, 0, max(size - block, 0));
+  if (!depth_aware || size <= block) return centred;
+  int lo = max(along - block + 1, 0), hi = min(along, size - block);
+  uint joined = 0u;  // bit j: pixel lo + j joins
+  for (int s = lo; s < hi + block; ++s)
+    if (joins(pixel + (s - along) * axis, pixel, distance)) joined |= 1u << uint(s - lo);
+  int best = centred, most = -1;
+  for (int s = lo; s <= hi; ++s) {
+    int count = bitCount((joined >> uint(s - lo)) & ((1u << uint(block)) - 1u));
+    if (count > most || (count == most && abs(s - centred) < abs(best - centred))) {
+      best = s;
+      most = count;
+    }
+  }
+  return best;
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, frame_size()))) return;
+  ivec2 axis = vertical ? ivec2(0, 1) : ivec2(1, 0);
+  int along = pixel.x * axis.x + pixel.y * axis.y;
+  int size = frame_size().x * axis.x + frame_size().y * axis.y;
+  float distance = surface_distance(pixel);
+  int start = window_start(pixel, axis, along, size, distance);
+  vec3 sum = vec3(0.0);
+  int count = 0;
+  for (int s = start; s < min(start + block, size); ++s) {
+    ivec2 neighbour = pixel + (s - along) * axis;
+    if (!joins(neighbour, pixel, distance)) continue;
+    sum += texelFetch(partial_sums, neighbour, 0).rgb;
+    ++count;
+  }
+  if (count > 0) sum *= float(block) / float(count);
+  if (vertical && normalized) sum *= light_guide(pixel_ray(vec2(pixel) + 0.5), distance);
+  imageStore(gathered, pixel, vec4(sum, count > 0 ? 1.0 : 0.0));
+}

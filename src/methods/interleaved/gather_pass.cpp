@@ -1,0 +1,42 @@
+#include "methods/interleaved/gather_pass.hpp"
+
+#include "gpu/program.hpp"
+
+#include <string>
+
+namespace airlight::methods {
+namespace {
+
+constexpr GLuint partial_unit = gpu::binding::first_free_texture;
+
+}  // namespace
+
+void GatherPass::prepare() {
+  program_ = gpu::make_compute_program("methods/interleaved/gather.comp.glsl",
+                                       gpu::frame_defines() + "#define BINDING_PARTIAL " +
+                                           std::to_string(partial_unit) + "\n");
+}
+
+void GatherPass::run(const gpu::SharedFrame& frame, const gpu::Texture& image) {
+  if (frame.width() != width_ || frame.height() != height_) {
+    width_ = frame.width();
+    height_ = frame.height();
+    rows_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
+  }
+  glUseProgram(program_.id());
+  gpu::set_uniform(program_, "block", settings_.block);
+  gpu::set_uniform(program_, "depth_aware", settings_.depth_aware ? 1 : 0);
+  gpu::set_uniform(program_, "depth_threshold", settings_.depth_threshold);
+  gpu::set_uniform(program_, "normalized", settings_.normalized ? 1 : 0);
+  pass(frame, image, rows_, false);
+  pass(frame, rows_, image, true);
+}
+
+void GatherPass::pass(const gpu::SharedFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical) {
+  gpu::set_uniform(program_, "vertical", vertical ? 1 : 0);
+  glBindTextureUnit(partial_unit, from.id());
+  glBindImageTexture(0, to.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  gpu::dispatch_pixels(frame.width(), frame.height());
+}
+
+}  // namespace airlight::methods

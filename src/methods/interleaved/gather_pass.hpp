@@ -1,0 +1,36 @@
+#pragma once
+// Interleaved sampling's separable sum (Tóth 2009 §4.1; gather.comp.glsl): a
+// horizontal then a vertical pass, each adding M consecutive pixels, optionally
+// leaving out neighbours across silhouettes (depth-aware).
+#include "gpu/frame.hpp"
+
+namespace airlight::methods {
+
+struct GatherSettings {
+  int block = 4;                 // M
+  bool depth_aware = true;
+  float depth_threshold = 0.1f;  // relative distance difference that excludes a neighbour
+  bool normalized = false;       // partial sums come divided by the light guide (MarchSettings)
+};
+
+class GatherPass {
+public:
+  explicit GatherPass(GatherSettings settings) : settings_(settings) {}
+
+  // Compiles the program; needs a current context.
+  void prepare();
+
+  // Replaces each pixel of `image` (RGBA32F of the frame's size) by the sum over
+  // its M×M window; the frame must be bound (SharedFrame::bind).
+  void run(const gpu::SharedFrame& frame, const gpu::Texture& image);
+
+private:
+  void pass(const gpu::SharedFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical);
+
+  GatherSettings settings_;
+  gpu::Program program_;
+  gpu::Texture rows_;  // the horizontal pass's output
+  int width_ = 0, height_ = 0;
+};
+
+}  // namespace airlight::methods

@@ -1,0 +1,74 @@
+#include "methods/interleaved/interleaved_method.hpp"
+
+#include "gpu/gpu_method.hpp"
+#include "methods/interleaved/gather_pass.hpp"
+#include "methods/raymarch/march_pass.hpp"
+
+#include <memory>
+
+namespace airlight::methods {
+namespace {
+
+// The march pass with blocks of M×M pixels (each pixel marches N/M² of the
+// samples), then the gather passes over the same target.
+class Interleaved final : public gpu::GpuMethod {
+public:
+  explicit Interleaved(const Settings& s)
+      : GpuMethod(s),
+        march_(MarchSettings::from(s, s.integer("block"), normalized(s))),
+        gather_({s.integer("block"), s.boolean("depth_aware"), static_cast<float>(s.real("depth_threshold")),
+                 normalized(s)}) {}
+
+private:
+  static bool normalized(const Settings& s) { return s.choice("gather") == "normalized"; }
+
+  void prepare_airlight(const Scene&) override {
+    march_.prepare();
+    gather_.prepare();
+  }
+
+  void render_airlight(const gpu::SharedFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
+    {
+      gpu::ScopedPass pass(timer, "march");
+      march_.run(frame, target);
+    }
+    gpu::ScopedPass pass(timer, "gather");
+    gather_.run(frame, target);
+  }
+
+  std::vector<std::pair<std::string, double>> stats() const override {
+    return {{"light_samples", march_.light_samples()}};
+  }
+
+  MarchPass march_;
+  GatherPass gather_;
+};
+
+}  // namespace
+
+MethodInfo interleaved_method() {
+  using T = SettingSpec::Type;
+  std::vector<SettingSpec> own = march_settings();
+  own.insert(own.end(),
+             {{"block", T::integer, 4, 1, 8, {},
+               "M: pixel (x, y) marches only the samples k ≡ (x mod M) + M·(y mod M) of the N (mod M²), so "
+               "each pixel evaluates N/M² samples; the gather sums M×M pixels"},
+              {"depth_aware", T::boolean, 1, 0, 1, {},
+               "move each pixel's gather window to its own side of a silhouette (see depth_threshold), leave "
+               "out neighbours still across and rescale the rest, so shafts do not bleed across silhouettes"},
+              {"depth_threshold", T::real, 0.1, 0.0, 10.0, {},
+               "relative G-buffer distance difference |d − d_pixel| / d_pixel beyond which a neighbour is "
+               "left out of the depth-aware gather"},
+              {"gather", T::choice, 1, 0, 0, {"sum", "normalized"},
+               "sum = Tóth's sum of the window's partial sums; normalized = each partial sum divided by its "
+               "pixel's unshadowed ∫I/r² (exact per light), the sum multiplied by the pixel's own, so that the "
+               "1/r² peak next to a light and the cone's edge do not blur (with equiangular steps, N = 64, 13–24× "
+               "less error than sum on teapot_spot, biri_sphere, three_lights)"}});
+  return {"interleaved", "Tóth 2009 §4.1",
+          "raymarch with the N samples spread over M×M pixel blocks (interleaved sampling, Keller & "
+          "Heidrich 2001) and gathered by a separable sum, normalized by each pixel's unshadowed ∫I/r² and "
+          "depth-aware by default",
+          gpu::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<Interleaved>(s); }};
+}
+
+}  // namespace airlight::methods
