@@ -3,6 +3,7 @@
 // a scene is loaded; phase-function sums are flattened into weighted lobes.
 #include <airlight/image.hpp>
 #include <filesystem>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
@@ -59,6 +60,18 @@ struct LightModel {
 
 enum class LightType { point, spot, directional };
 
+// A directional light's bounded beam (Dobashi §4: parallel light, here in a
+// bounded light volume so that its airlight stays finite). The light enters
+// through the rectangle of `size` (width along `right`, height along `up` of
+// optics::gobo_frame) centred at `origin` and perpendicular to the light's
+// direction, and exists for `length` metres downstream of it: the beam is that
+// oriented box. A gobo on a directional light maps across the rectangle.
+struct Beam {
+  glm::vec3 origin{0.0f};
+  glm::vec2 size{1.0f};  // width, height (m)
+  float length = 1.0f;   // m, along direction
+};
+
 struct Light {
   LightType type = LightType::point;
   glm::vec3 position{0.0f};           // point, spot
@@ -67,8 +80,9 @@ struct Light {
   Color irradiance{0.0f};             // directional: W/m^2
   float cone_deg = 180.0f;            // spot half-angle
   float edge_deg = 0.0f;              // spot smooth edge width (0 = hard cut, Nilsson eq. 2.9)
-  std::shared_ptr<const Image> gobo;  // spot light map (linear RGB), or null
-  glm::vec3 gobo_up{0, 1, 0};         // orients the gobo (unit, not parallel to direction)
+  std::shared_ptr<const Image> gobo;  // light map (linear RGB) of a spot or a beam, or null
+  glm::vec3 gobo_up{0, 1, 0};         // orients the gobo and the beam (unit, not parallel to direction)
+  std::optional<Beam> beam;           // directional: the bounded beam; none = lit everywhere
 };
 
 struct Mesh {

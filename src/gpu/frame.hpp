@@ -76,6 +76,9 @@ public:
   int height() const { return height_; }
   int light_count() const { return light_count_; }
   const Texture& distance() const { return distance_; }
+  // DEPTH_COMPONENT32F of the G-buffer pass (cleared to 1 where no surface is
+  // hit), for methods that rasterize with the depth test against the scene.
+  const Texture& depth() const { return depth_; }
   const Texture& normal() const { return normal_; }
   const Texture& albedo() const { return albedo_; }
   const Texture& surface() const { return surface_; }
