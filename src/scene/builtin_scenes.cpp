@@ -1,15 +1,19 @@
 // Built-in scenes (DESIGN §4): the documents' test scenes, rebuilt from their
 // descriptions (the figures did not survive), lit so that the airlight pass is
 // roughly 0.05–1 W/(m²·sr) in the shaft at the default camera and exposure 1.
+#include "scene/gobo_patterns.hpp"
 #include "scene/light_defaults.hpp"
 #include "scene/mesh_build.hpp"
 #include "scene/shapes.hpp"
 
 #include <airlight/error.hpp>
 #include <airlight/scene.hpp>
+#include <algorithm>
+#include <array>
 #include <functional>
 #include <glm/geometric.hpp>
 #include <map>
+#include <memory>
 
 namespace airlight {
 namespace {
@@ -144,11 +148,184 @@ Scene three_lights() {
   return s;
 }
 
+// `light` projecting `gobo`, its light map (Dobashi et al. 2000, §4).
+Light with_gobo(Light light, std::shared_ptr<const Image> gobo) {
+  light.gobo = std::move(gobo);
+  return light;
+}
+
+void add_box(Scene& s, const glm::vec3& min, const glm::vec3& max, Color albedo,
+             const std::string& name) {
+  s.meshes.push_back(place(make_box(min, max), albedo, name));
+}
+
+// The set of Dobashi et al. 2000, Fig. 7b: a raised stage (a black deck 1 m
+// above the auditorium floor, deep enough to hold every spot's pool of light)
+// before a back wall; a crate, a column and a ball on a plinth stand in the
+// light to cut volumetric shadows into the shafts; the truss holds the spots.
+void add_stage_set(Scene& s) {
+  add_box(s, {-6.0f, -1.0f, -6.0f}, {6.0f, 0.0f, 2.0f}, Color(0.25f), "stage floor");
+  add_box(s, {-9.0f, -1.2f, 2.0f}, {9.0f, -1.0f, 13.0f}, Color(0.35f), "auditorium floor");
+  add_box(s, {-7.0f, -1.0f, -6.4f}, {7.0f, 7.0f, -6.0f}, Color(0.45f), "back wall");
+  add_box(s, {-5.0f, 5.5f, 1.35f}, {5.0f, 5.7f, 1.65f}, Color(0.3f), "truss");
+  add_box(s, {-2.3f, 0.0f, -2.4f}, {-1.3f, 1.0f, -1.4f}, Color(0.55f, 0.45f, 0.35f), "crate");
+  s.meshes.push_back(place(make_cylinder({1.9f, 0.0f, -2.5f}, 0.35f, 2.4f, 24), Color(0.7f), "column"));
+  add_box(s, {3.0f, 0.0f, -1.6f}, {3.6f, 0.8f, -1.0f}, Color(0.6f), "plinth");
+  s.meshes.push_back(place(make_sphere({3.3f, 1.2f, -1.3f}, 0.4f, 24), Color(0.75f), "ball"));
+}
+
+// Dobashi Fig. 7b: "There are 5 spotlights. Some of the spotlights are special
+// effects lights, polka dots." Five spots hang under the truss over the front
+// edge of the stage and point down and back at different angles, in several
+// colours; two throw polka dots from 64×64 light maps (the light-map size of
+// Fig. 7b in Dobashi's Table 1). The dots are hard-edged, the plain spots soft.
+// The white spot lays its big dots near the front of the stage, where each
+// still covers several pixels of a 128×96 image (floor pattern comparisons).
+void add_stage_lights(Scene& s) {
+  const auto big_dots = std::make_shared<const Image>(scene_gobo::polka_dots(64, 4, 0.7f));
+  const auto small_dots = std::make_shared<const Image>(scene_gobo::polka_dots(64, 5, 0.55f));
+  const float y = 5.3f, z = 1.5f;  // just below the truss
+  s.lights.push_back(spot({-4.0f, y, z}, {-3.3f, 0.0f, -1.0f}, Color(300.0f, 240.0f, 160.0f), 16.0f, 3.0f));
+  s.lights.push_back(
+      with_gobo(spot({-2.0f, y, z}, {-1.6f, 0.0f, -1.8f}, Color(700.0f, 160.0f, 600.0f), 20.0f), small_dots));
+  s.lights.push_back(
+      with_gobo(spot({0.0f, y, z}, {0.0f, 0.0f, -0.6f}, Color(800.0f, 800.0f, 900.0f), 25.0f), big_dots));
+  s.lights.push_back(spot({2.0f, y, z}, {2.1f, 0.0f, -2.6f}, Color(400.0f, 240.0f, 60.0f), 14.0f, 2.0f));
+  s.lights.push_back(spot({4.0f, y, z}, {3.0f, 0.0f, -1.2f}, Color(120.0f, 300.0f, 260.0f), 20.0f, 3.0f));
+}
+
+// Dobashi et al. 2000, Fig. 7b, "an example of the lighting design for
+// stages", seen from high in the audience with all five shafts in view through
+// a theatre haze that scatters a little forward.
+Scene stage() {
+  Scene s;
+  s.name = "stage";
+  s.camera.position = {0.0f, 5.5f, 11.5f};
+  s.camera.look_at = {0.0f, 1.9f, -1.0f};
+  s.medium.sigma_s = Color(0.05f);
+  s.medium.sigma_a = Color(0.005f);
+  s.medium.phase = single_lobe(PhaseType::henyey_greenstein, 0.3f);
+  s.ambient = Color(0.02f);  // a dim house light, so that the set reads
+  add_stage_set(s);
+  add_stage_lights(s);
+  return s;
+}
+
+// An axis-aligned region of space: a room's inside, a window opening.
+struct Extent {
+  glm::vec3 min, max;
+};
+
+std::array<glm::vec3, 8> corners(const Extent& e) {
+  std::array<glm::vec3, 8> c;
+  for (int k = 0; k < 8; ++k)
+    c[k] = {(k & 1) ? e.max.x : e.min.x, (k & 2) ? e.max.y : e.min.y, (k & 4) ? e.max.z : e.min.z};
+  return c;
+}
+
+// The beam of the directional light `sun` through `opening` (scene.hpp: Beam).
+// Its rectangle lies upstream of the whole opening, `margin` clear of it;
+// across the light it covers the opening's projection along the light with
+// `margin` to spare; it reaches past every corner of `room`. The rectangle's
+// axes are the gobo frame of DESIGN §1 (optics::gobo_frame, out of this layer's
+// reach): right = normalize(direction × gobo_up), up = right × direction.
+Beam beam_through(const Light& sun, const Extent& opening, const Extent& room, float margin) {
+  const glm::vec3 d = sun.direction, centre = 0.5f * (opening.min + opening.max);
+  const glm::vec3 right = glm::normalize(glm::cross(d, sun.gobo_up)), up = glm::cross(right, d);
+  float upstream = 0.0f;
+  glm::vec2 half(0.0f);
+  for (const glm::vec3& c : corners(opening)) {
+    upstream = std::max(upstream, glm::dot(centre - c, d));
+    half = glm::max(half, glm::abs(glm::vec2(glm::dot(c - centre, right), glm::dot(c - centre, up))));
+  }
+  Beam beam;
+  beam.origin = centre - (upstream + margin) * d;
+  beam.size = 2.0f * (half + margin);
+  for (const glm::vec3& c : corners(room))
+    beam.length = std::max(beam.length, glm::dot(c - beam.origin, d) + margin);
+  return beam;
+}
+
+// A closed room around `inside`, of slabs `wall` thick, with `window` (an
+// opening through the wall at z = inside.min.z) left open: that wall is
+// built from the four boxes around the opening.
+void add_room(Scene& s, const Extent& inside, const Extent& window, float wall, Color albedo) {
+  const glm::vec3 lo = inside.min, hi = inside.max, w(wall);
+  auto slab = [&](const glm::vec3& min, const glm::vec3& max, const char* name) {
+    add_box(s, min, max, albedo, name);
+  };
+  slab(lo - w, {hi.x + wall, lo.y, hi.z + wall}, "floor");
+  slab({lo.x - wall, hi.y, lo.z - wall}, hi + w, "ceiling");
+  slab({lo.x - wall, lo.y, lo.z}, {lo.x, hi.y, hi.z}, "left wall");
+  slab({hi.x, lo.y, lo.z}, {hi.x + wall, hi.y, hi.z}, "right wall");
+  slab({lo.x - wall, lo.y, hi.z}, {hi.x + wall, hi.y, hi.z + wall}, "front wall");
+  const float back = lo.z - wall;
+  const glm::vec2 wx(window.min.x, window.max.x), wy(window.min.y, window.max.y);
+  slab({lo.x - wall, lo.y, back}, {hi.x + wall, wy[0], lo.z}, "wall below window");
+  slab({lo.x - wall, wy[1], back}, {hi.x + wall, hi.y, lo.z}, "wall above window");
+  slab({lo.x - wall, wy[0], back}, {wx[0], wy[1], lo.z}, "wall left of window");
+  slab({wx[1], wy[0], back}, {hi.x + wall, wy[1], lo.z}, "wall right of window");
+}
+
+// A table standing on y = 0: a top 5 cm thick on four legs.
+void add_table(Scene& s, const glm::vec3& centre_of_top, glm::vec2 size, Color albedo) {
+  const glm::vec3 c = centre_of_top, half(0.5f * size.x, 0.0f, 0.5f * size.y), thick(0.0f, 0.05f, 0.0f);
+  add_box(s, c - half - thick, c + half, albedo, "table top");
+  const float leg = 0.06f, inset = 0.08f;  // half-width of a leg, its inset from the top's edge
+  for (const float sx : {-1.0f, 1.0f})
+    for (const float sz : {-1.0f, 1.0f}) {
+      const glm::vec3 foot(c.x + sx * (half.x - inset), 0.0f, c.z + sz * (half.z - inset));
+      const glm::vec3 top = foot + glm::vec3(0.0f, c.y - thick.y, 0.0f);
+      add_box(s, foot - glm::vec3(leg, 0.0f, leg), top + glm::vec3(leg, 0.0f, leg), albedo, "table leg");
+    }
+}
+
+// Dobashi et al. 2000, Fig. 8b: "the sunlight passes through stained glass
+// windows in a dusty room. … a pattern of the stained glass is used as the
+// light map texture for the parallel light source". An 8 m × 3.5 m × 6 m room
+// with one tall window in its back wall; the sun slants down through it in a
+// bounded beam carrying a 128×128 stained-glass light map (Table 1's size for
+// Fig. 8b), so the dust shows coloured shafts and the floor a coloured window.
+// A table and a pillar stand in the beam. The camera stands in the room looking
+// back at the window across the shafts, which the dust scatters forward toward
+// it. A bright sun on dark stone lifts the shafts to the airlight level of the
+// other scenes (top of this file) without burning out the lit floor; an
+// ambient term shows the rest of the room.
+Scene stained_glass() {
+  Scene s;
+  s.name = "stained_glass";
+  s.camera.position = {2.0f, 1.5f, 1.8f};
+  s.camera.look_at = {0.0f, 1.0f, -3.0f};
+  s.camera.fov_y_deg = 60.0f;
+  s.medium.sigma_s = Color(0.15f);
+  s.medium.sigma_a = Color(0.01f);
+  s.medium.phase = single_lobe(PhaseType::henyey_greenstein, 0.4f);
+  s.ambient = Color(0.12f);
+  const Extent inside{{-4.0f, 0.0f, -3.0f}, {4.0f, 3.5f, 3.0f}};
+  const float wall = 0.25f;
+  const Extent window{{-0.8f, 1.0f, inside.min.z - wall}, {0.8f, 3.0f, inside.min.z}};
+  add_room(s, inside, window, wall, Color(0.32f, 0.3f, 0.27f));  // dark stone
+  add_table(s, {0.1f, 0.75f, -1.3f}, {1.2f, 0.7f}, Color(0.45f, 0.3f, 0.2f));
+  s.meshes.push_back(
+      place(make_cylinder({-0.35f, 0.0f, -2.5f}, 0.15f, inside.max.y, 24), Color(0.6f), "pillar"));
+  Light sun;
+  sun.type = LightType::directional;
+  sun.direction = glm::normalize(glm::vec3(0.25f, -0.71f, 0.66f));  // 45° high
+  sun.irradiance = Color(24.0f, 22.5f, 19.5f);
+  sun.gobo = std::make_shared<const Image>(scene_gobo::stained_glass(128, 128));
+  sun.gobo_up = {0.0f, 1.0f, 0.0f};  // the window's top toward the sky: the pattern stands upright
+  sun.beam = beam_through(sun, window, inside, 0.05f);
+  s.lights.push_back(sun);
+  return s;
+}
+
 const std::map<std::string, std::function<Scene()>>& builtins() {
   static const std::map<std::string, std::function<Scene()>> scenes = {
       {"teapot_spot", teapot_spot},
       {"biri_sphere", biri_sphere},
       {"nilsson_toplight", nilsson_toplight},
+      {"stage", stage},
+      {"stained_glass", stained_glass},
       {"three_lights", three_lights}};
   return scenes;
 }

@@ -2,7 +2,13 @@
 
 #include <airlight/scene.hpp>
 #include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
+#include <limits>
+#include <optional>
 
 namespace airlight {
 namespace {
@@ -46,7 +52,8 @@ TEST(BuiltinScenes, EveryBuiltinLoadsWithValidData) {
 
 TEST(BuiltinScenes, IncludeTheDocumentsScenes) {
   const auto names = builtin_scene_names();
-  for (const char* name : {"teapot_spot", "biri_sphere", "nilsson_toplight", default_builtin})
+  for (const char* name : {"teapot_spot", "stage", "stained_glass", "biri_sphere", "nilsson_toplight",
+                           default_builtin})
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
 }
 
@@ -54,6 +61,210 @@ TEST(BuiltinScenes, ToplightUsesNilssonsSimplifiedModel) {
   const Scene scene = builtin_scene("nilsson_toplight");
   EXPECT_EQ(scene.light_model.type, LightModelType::simplified);
   EXPECT_EQ(scene.lights[0].direction, glm::vec3(0, -1, 0));
+}
+
+// ---- geometry the scene-specific checks share -------------------------------
+
+struct Bounds {
+  glm::vec3 min{std::numeric_limits<float>::infinity()}, max{-std::numeric_limits<float>::infinity()};
+  bool contains(const glm::vec3& p) const {
+    return glm::all(glm::greaterThan(p, min)) && glm::all(glm::lessThan(p, max));
+  }
+};
+
+// The bounds of the meshes called `name` (the built-ins name their parts).
+std::optional<Bounds> bounds_of(const Scene& scene, const std::string& name) {
+  std::optional<Bounds> b;
+  for (const Mesh& mesh : scene.meshes) {
+    if (mesh.name != name) continue;
+    if (!b) b.emplace();
+    for (const glm::vec3& p : mesh.positions) {
+      b->min = glm::min(b->min, p);
+      b->max = glm::max(b->max, p);
+    }
+  }
+  return b;
+}
+
+// Whether the ray from `origin` along `dir` meets any triangle (Möller–Trumbore).
+bool hits_a_mesh(const Scene& scene, const glm::vec3& origin, const glm::vec3& dir) {
+  for (const Mesh& mesh : scene.meshes)
+    for (const glm::uvec3& t : mesh.triangles) {
+      const glm::vec3 a = mesh.positions[t.x], e1 = mesh.positions[t.y] - a, e2 = mesh.positions[t.z] - a;
+      const glm::vec3 p = glm::cross(dir, e2);
+      const float det = glm::dot(e1, p);
+      if (std::fabs(det) < 1e-12f) continue;
+      const glm::vec3 s = (origin - a) / det, q = glm::cross(s, e1);
+      const float u = glm::dot(s, p), v = glm::dot(dir, q);
+      if (u >= -1e-6f && v >= -1e-6f && u + v <= 1.0f + 1e-6f && glm::dot(e2, q) > 0.0f) return true;
+    }
+  return false;
+}
+
+// Direction k of n spread evenly over the sphere (a Fibonacci lattice).
+glm::vec3 sphere_direction(int k, int n) {
+  const float y = 1.0f - 2.0f * (k + 0.5f) / n, r = std::sqrt(1.0f - y * y);
+  const float phi = k * glm::pi<float>() * (3.0f - std::sqrt(5.0f));
+  return {r * std::cos(phi), y, r * std::sin(phi)};
+}
+
+// Whether `p` projects into the image of `camera` at width:height `aspect`.
+bool in_view(const Camera& camera, float aspect, const glm::vec3& p) {
+  const glm::vec3 forward = glm::normalize(camera.look_at - camera.position);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up)), up = glm::cross(right, forward);
+  const glm::vec3 q = p - camera.position;
+  const float depth = glm::dot(q, forward), t = std::tan(glm::radians(0.5f * camera.fov_y_deg));
+  return depth > camera.near && std::fabs(glm::dot(q, up)) < t * depth &&
+         std::fabs(glm::dot(q, right)) < aspect * t * depth;
+}
+
+// The darkest and brightest channel values of an image.
+glm::vec2 value_range(const Image& image) {
+  glm::vec2 range(1.0f, 0.0f);
+  for (const glm::vec3& p : image.pixels) {
+    range.x = std::min({range.x, p.r, p.g, p.b});
+    range.y = std::max({range.y, p.r, p.g, p.b});
+  }
+  return range;
+}
+
+// ---- stage (Dobashi et al. 2000, Fig. 7b) -----------------------------------
+
+TEST(BuiltinScenes, StageHasFiveSpotsTwoOrMoreThrowingDotsOnBlack) {
+  const Scene scene = builtin_scene("stage");
+  ASSERT_EQ(scene.lights.size(), 5u);
+  int gobos = 0;
+  for (const Light& light : scene.lights) {
+    EXPECT_EQ(light.type, LightType::spot);
+    EXPECT_GE(light.cone_deg, 12.0f);
+    EXPECT_LE(light.cone_deg, 25.0f);
+    if (!light.gobo) continue;
+    ++gobos;
+    const glm::vec2 range = value_range(*light.gobo);
+    EXPECT_LT(range.x, 0.05f) << "dark texels between the dots";
+    EXPECT_GT(range.y, 0.95f) << "bright texels in the dots";
+  }
+  EXPECT_GE(gobos, 2);
+}
+
+// Each spot's cone, its axis and eight rays along its rim, lands on the stage's
+// deck, and the camera sees every spot and where its axis lands.
+TEST(BuiltinScenes, EveryStageSpotLandsOnTheDeckInView) {
+  const Scene scene = builtin_scene("stage");
+  const auto deck = bounds_of(scene, "stage floor");
+  ASSERT_TRUE(deck);
+  for (const Light& light : scene.lights) {
+    const glm::vec3 a = light.direction, e1 = glm::normalize(glm::cross(a, glm::vec3(1, 0, 0)));
+    const glm::vec3 e2 = glm::cross(a, e1);
+    const float cone = glm::radians(light.cone_deg);
+    for (int k = -1; k < 8; ++k) {  // -1: the axis
+      const float phi = glm::quarter_pi<float>() * k;
+      const glm::vec3 rim = std::cos(phi) * e1 + std::sin(phi) * e2;
+      const glm::vec3 dir = k < 0 ? a : std::cos(cone) * a + std::sin(cone) * rim;
+      ASSERT_LT(dir.y, 0.0f);
+      const glm::vec3 hit = light.position + dir * ((deck->max.y - light.position.y) / dir.y);
+      EXPECT_TRUE(hit.x > deck->min.x && hit.x < deck->max.x && hit.z > deck->min.z && hit.z < deck->max.z)
+          << "spot at x = " << light.position.x << ", ray " << k << " lands at " << hit.x << ", " << hit.z;
+      if (k < 0) {
+        EXPECT_TRUE(in_view(scene.camera, 4.0f / 3.0f, hit));
+      }
+    }
+    EXPECT_TRUE(in_view(scene.camera, 4.0f / 3.0f, light.position));
+  }
+}
+
+// ---- stained_glass (Dobashi et al. 2000, Fig. 8b) ---------------------------
+
+// The room's inside and its window opening, from the named slabs around them.
+struct Room {
+  Bounds inside, window;
+};
+
+Room room_of(const Scene& scene) {
+  auto part = [&](const char* name) {
+    const auto b = bounds_of(scene, name);
+    EXPECT_TRUE(b) << name;
+    return b.value_or(Bounds{});
+  };
+  const Bounds below = part("wall below window"), above = part("wall above window");
+  const Bounds left = part("wall left of window"), right = part("wall right of window");
+  return {{{part("left wall").max.x, part("floor").max.y, below.max.z},
+           {part("right wall").min.x, part("ceiling").min.y, part("front wall").min.z}},
+          {{left.max.x, below.max.y, left.min.z}, {right.min.x, above.min.y, left.max.z}}};
+}
+
+std::array<glm::vec3, 8> corners(const Bounds& b) {
+  std::array<glm::vec3, 8> c;
+  for (int k = 0; k < 8; ++k)
+    c[k] = {(k & 1) ? b.max.x : b.min.x, (k & 2) ? b.max.y : b.min.y, (k & 4) ? b.max.z : b.min.z};
+  return c;
+}
+
+TEST(BuiltinScenes, StainedGlassSunIsAnUprightBeamWithAGobo) {
+  const Scene scene = builtin_scene("stained_glass");
+  ASSERT_EQ(scene.lights.size(), 1u);
+  const Light& sun = scene.lights[0];
+  EXPECT_EQ(sun.type, LightType::directional);
+  ASSERT_TRUE(sun.beam);
+  ASSERT_TRUE(sun.gobo);
+  const glm::vec2 range = value_range(*sun.gobo);
+  EXPECT_LT(range.x, 0.05f) << "lead";
+  EXPECT_GT(range.y, 0.6f) << "glass";
+  EXPECT_LT(sun.direction.y, -0.3f) << "the sun slants down into the room";
+  // The frame of the beam's rectangle (scene.hpp: Beam) exists and its up,
+  // the gobo's top row, points to the sky.
+  const glm::vec3 right = glm::cross(sun.direction, sun.gobo_up);
+  ASSERT_GT(glm::length(right), 0.1f);
+  EXPECT_GT(glm::cross(glm::normalize(right), sun.direction).y, 0.0f);
+}
+
+// Every corner of the window opening, projected along the light onto the
+// plane of the beam's rectangle, falls inside the rectangle, upstream of the
+// opening; the beam reaches past the whole room.
+TEST(BuiltinScenes, StainedGlassBeamCoversTheWindowAndReachesThroughTheRoom) {
+  const Scene scene = builtin_scene("stained_glass");
+  const Light& sun = scene.lights.at(0);
+  ASSERT_TRUE(sun.beam);
+  const Beam& beam = *sun.beam;
+  const glm::vec3 d = sun.direction, right = glm::normalize(glm::cross(d, sun.gobo_up));
+  const glm::vec3 up = glm::cross(right, d);
+  const Room room = room_of(scene);
+  for (const glm::vec3& corner : corners(room.window)) {
+    const glm::vec3 q = corner - beam.origin;
+    EXPECT_GT(glm::dot(q, d), 0.0f) << "the rectangle lies outside, upstream of the window";
+    EXPECT_LT(std::fabs(glm::dot(q, right)), 0.5f * beam.size.x);
+    EXPECT_LT(std::fabs(glm::dot(q, up)), 0.5f * beam.size.y);
+  }
+  for (const glm::vec3& corner : corners(room.inside))
+    EXPECT_LT(glm::dot(corner - beam.origin, d), beam.length);
+}
+
+// Rays from the camera and from points near the room's corners meet a surface
+// in every direction except through the window: the room is closed but for it,
+// and the camera is inside.
+TEST(BuiltinScenes, StainedGlassRoomIsClosedButForTheWindow) {
+  const Scene scene = builtin_scene("stained_glass");
+  const Room room = room_of(scene);
+  ASSERT_TRUE(room.inside.contains(scene.camera.position));
+  std::vector<glm::vec3> origins{scene.camera.position};
+  const glm::vec3 centre = 0.5f * (room.inside.min + room.inside.max);
+  for (const glm::vec3& corner : corners(room.inside))
+    origins.push_back(glm::mix(corner, centre, 0.05f));
+  int escaped = 0;
+  for (const glm::vec3& origin : origins)
+    for (int k = 0; k < 4000; ++k) {
+      const glm::vec3 dir = sphere_direction(k, 4000);
+      if (hits_a_mesh(scene, origin, dir)) continue;
+      ++escaped;
+      // It leaves through the opening: it crosses the wall's inner face there.
+      ASSERT_LT(dir.z, 0.0f);
+      const glm::vec3 at = origin + dir * ((room.window.max.z - origin.z) / dir.z);
+      EXPECT_TRUE(at.x > room.window.min.x && at.x < room.window.max.x && at.y > room.window.min.y &&
+                  at.y < room.window.max.y)
+          << "a ray from " << origin.x << ", " << origin.y << ", " << origin.z << " escapes at " << at.x
+          << ", " << at.y;
+    }
+  EXPECT_GT(escaped, 0) << "the window is open";
 }
 
 TEST(BuiltinScenes, UnknownNameIsAnInputError) {
