@@ -33,12 +33,13 @@ layout(std140, binding = BINDING_FRAME_BLOCK) uniform FrameBlock {
 };
 
 struct SceneLight {
-  vec4 position;       // xyz; w: cone half-angle (rad)
+  vec4 position;       // xyz: point / spot position, or a directional light's beam origin;
+                       // w: spot cone half-angle (rad), or beam length (m; 0: no beam)
   vec4 direction;      // xyz: spot axis or directional travel (unit); w: edge width (rad)
   vec4 color;          // rgb: intensity W/sr (point, spot) or irradiance W/m² (directional);
                        // w: tan(cone) for gobo_uv, 0 when cone >= 90°
-  vec4 gobo_right;     // xyz: the gobo frame (optics gobo_frame)
-  vec4 gobo_up;        // xyz
+  vec4 gobo_right;     // xyz: the gobo / beam frame (optics gobo_frame); w: beam width (m)
+  vec4 gobo_up;        // xyz; w: beam height (m)
   mat4 shadow_matrix;  // world → clip of the 2D shadow map
   ivec4 meta;          // LightType, shadow kind, shadow layer (2D) or cube index, gobo layer (-1: none)
   vec4 shadow;         // texel footprint = (x·distance + y) / resolution
@@ -125,11 +126,20 @@ vec3 optical_depth(vec3 a, vec3 b) {
 // optics::eye_leg_depth: zero under the simplified model (T = 1, Nilsson eq. 2.15).
 vec3 eye_leg_depth(vec3 a, vec3 b) { return simplified_model() ? vec3(0.0) : optical_depth(a, b); }
 
-// optics::light_leg_depth: to the light's position; directional light only
-// through bounded volumes (DESIGN §1).
+// A directional light with a beam (position.w = its length > 0), and the beam.
+bool has_beam(int i) { return lights[i].meta.x == LIGHT_DIRECTIONAL && lights[i].position.w > 0.0; }
+Beam light_beam(int i) {
+  return Beam(lights[i].position.xyz, lights[i].direction.xyz, lights[i].gobo_right.xyz, lights[i].gobo_up.xyz,
+              vec2(lights[i].gobo_right.w, lights[i].gobo_up.w), lights[i].position.w);
+}
+
+// optics::light_leg_depth: to the light's position; a beam, emitted at its
+// aperture, back to the aperture's plane (0 upstream of it); other directional
+// lights only through bounded volumes (DESIGN §1).
 vec3 light_leg_depth(int i, vec3 x) {
   if (simplified_model()) return vec3(0.0);
   if (lights[i].meta.x != LIGHT_DIRECTIONAL) return optical_depth(x, lights[i].position.xyz);
+  if (has_beam(i)) return optical_depth(x, x - max(beam_depth(light_beam(i), x), 0.0) * lights[i].direction.xyz);
   vec3 depth = vec3(0.0);
   for (int v = 0; v < volume_count(); ++v)
     depth += volumes[v].sigma_t.rgb * box_ray_chord(x, -lights[i].direction.xyz, volumes[v].lo.xyz, volumes[v].hi.xyz);
@@ -144,27 +154,52 @@ struct Arrival {
   float distance;   // +∞ for directional lights
 };
 
-// optics::radiant_intensity of a point or spot light toward unit `dir` from it.
-vec3 radiant_intensity(int i, vec3 dir) {
-  if (lights[i].meta.x == LIGHT_POINT) return lights[i].color.rgb;
-  vec3 axis = lights[i].direction.xyz;
-  vec3 intensity = lights[i].color.rgb * spot_cone(axis, lights[i].position.w, lights[i].direction.w, dir);
+// ---- the light map (Dobashi 2000 §4: I(θ, φ) as a texture) -------------------
+// light_arrival = light_arrival_unmapped × light_map, so that a method that
+// projects the light map itself (planes) can evaluate the two apart.
+
+// The gobo colour of light i at uv (1 without a gobo; black outside [0, 1]²).
+vec3 gobo_colour(int i, vec2 uv) {
   int gobo = lights[i].meta.w;
-  if (gobo < 0 || intensity == vec3(0.0)) return intensity;
-  vec2 uv = gobo_uv(axis, lights[i].gobo_right.xyz, lights[i].gobo_up.xyz, lights[i].color.w, dir);
-  return intensity * sample_gobo(gobo_maps, float(gobo), uv);
+  return gobo < 0 ? vec3(1.0) : sample_gobo(gobo_maps, float(gobo), uv);
 }
 
-// optics::arrival: what reaches x from light i before visibility and extinction.
-Arrival light_arrival(int i, vec3 x) {
+// optics::light_map: the unitless per-channel factor of what light i sends to
+// x: spot → spot_cone · gobo colour toward x; directional with a beam → (x
+// inside the beam) · gobo colour at beam_uv(x); point and unbounded directional → 1.
+vec3 light_map(int i, vec3 x) {
+  if (lights[i].meta.x == LIGHT_SPOT) {
+    vec3 axis = lights[i].direction.xyz, delta = x - lights[i].position.xyz;
+    float r = length(delta);
+    vec3 dir = r > 0.0 ? delta / r : axis;  // at the apex: the axis, as light_arrival_unmapped
+    float cone = spot_cone(axis, lights[i].position.w, lights[i].direction.w, dir);
+    if (cone == 0.0) return vec3(0.0);
+    vec2 uv = gobo_uv(axis, lights[i].gobo_right.xyz, lights[i].gobo_up.xyz, lights[i].color.w, dir);
+    return cone * gobo_colour(i, uv);
+  }
+  if (!has_beam(i)) return vec3(1.0);
+  Beam b = light_beam(i);
+  return inside_beam(b, x) ? gobo_colour(i, beam_uv(b, x)) : vec3(0.0);
+}
+
+// optics::arrival without the light map: intensity/falloff toward x (point,
+// spot), or the irradiance (directional).
+Arrival light_arrival_unmapped(int i, vec3 x) {
   if (lights[i].meta.x == LIGHT_DIRECTIONAL)
     return Arrival(lights[i].color.rgb, -lights[i].direction.xyz, positive_infinity());
   vec3 delta = lights[i].position.xyz - x;
   float r = length(delta);
   vec3 to_light = r > 0.0 ? delta / r : -lights[i].direction.xyz;
-  vec3 intensity = radiant_intensity(i, -to_light);
-  vec3 irradiance = arrival_irradiance(intensity, scene_counts.w, r, light_model_coeffs.y, light_model_coeffs.x);
+  vec3 irradiance =
+      arrival_irradiance(lights[i].color.rgb, scene_counts.w, r, light_model_coeffs.y, light_model_coeffs.x);
   return Arrival(irradiance, to_light, r);
+}
+
+// optics::arrival: what reaches x from light i before visibility and extinction.
+Arrival light_arrival(int i, vec3 x) {
+  Arrival a = light_arrival_unmapped(i, x);
+  a.irradiance *= light_map(i, x);
+  return a;
 }
 
 // ---- shadow maps (Tóth §4: 2D for spots, cubes for point lights) ---------------
@@ -222,12 +257,19 @@ float surface_visibility(int i, vec3 x, vec3 n) {
 
 // ---- single scattering (optics::inscatter, DESIGN §1) -------------------------
 
-// σs·p(cos θ)·I(ω)·exp(−τ_light)/r² · exp(−τ_eye) at x on a view ray along unit
-// view_dir, without visibility; eye_depth is τ from the eye to x (shared by all
-// lights at one sample).
-vec3 inscatter(int i, vec3 x, vec3 view_dir, vec3 eye_depth) {
-  Arrival a = light_arrival(i, x);
-  if (a.irradiance == vec3(0.0)) return vec3(0.0);
+// inscatter without the light map: σs·p(cos θ)·I/r²·exp(−τ_light)·exp(−τ_eye)
+// with I the light's unmapped intensity (or irradiance), at x on a view ray
+// along unit view_dir, without visibility; eye_depth is τ from the eye to x
+// (shared by all lights at one sample).
+vec3 inscatter_unmapped(int i, vec3 x, vec3 view_dir, vec3 eye_depth) {
+  Arrival a = light_arrival_unmapped(i, x);
   float cos_theta = dot(a.to_light, view_dir);  // light's travel vs. toward the eye
   return scattering(x, cos_theta) * a.irradiance * exp(-(light_leg_depth(i, x) + eye_depth));
+}
+
+// optics::inscatter: light_map × inscatter_unmapped. Outside a cone or a beam
+// the map is 0 and the rest (media, extinction) is skipped: marches stay cheap.
+vec3 inscatter(int i, vec3 x, vec3 view_dir, vec3 eye_depth) {
+  vec3 map = light_map(i, x);
+  return map == vec3(0.0) ? vec3(0.0) : map * inscatter_unmapped(i, x, view_dir, eye_depth);
 }

@@ -1,5 +1,5 @@
 // Surface pass: L_surf·T(d) per pixel, exactly as reference.cpp's trace():
-// Lambertian with ambient, each light's arrival (cone, gobo, falloff), shadow-map
+// Lambertian with ambient, each light's arrival (cone, beam, gobo, falloff), shadow-map
 // visibility, a light behind the triangle's plane blocked, extinction on the
 // light's leg and on the eye's (DESIGN §1); 0 where the ray reaches the far plane.
 #include "frame/scene.glsl"

@@ -1,5 +1,6 @@
 // GLSL twin of src/optics/light.cpp: what a light sends toward a point (spot
-// cone, gobo) and the distance falloff of each light model (DESIGN §1).
+// cone, gobo, a directional light's beam) and the distance falloff of each
+// light model (DESIGN §1).
 // Tested against the C++ by src/gpu/optics_twin_test.cpp.
 #include "optics/numerics.glsl"
 
@@ -114,6 +115,32 @@ vec3 sample_gobo(sampler2DArray gobos, float layer, vec2 uv) {
   vec3 c01 = texelFetch(gobos, ivec3(i0.x, i1.y, l), 0).rgb;
   vec3 c11 = texelFetch(gobos, ivec3(i1.x, i1.y, l), 0).rgb;
   return mix(mix(c00, c10, w.x), mix(c01, c11, w.x), w.y);
+}
+
+// A directional light's beam (scene.hpp Beam; the light.cpp beam functions):
+// the box of the aperture rectangle `size` (along right, up: optics
+// gobo_frame) centred at `origin`, perpendicular to the unit `axis` (the
+// light's travel), extended `length` downstream.
+struct Beam {
+  vec3 origin, axis, right, up;
+  vec2 size;
+  float length;
+};
+
+// optics::beam_uv: u = 0.5 + (x − origin)·right / w, v = 0.5 + (x − origin)·up / h.
+vec2 beam_uv(Beam b, vec3 x) {
+  vec3 d = x - b.origin;
+  return 0.5 + vec2(dot(d, b.right), dot(d, b.up)) / b.size;
+}
+
+// optics::beam_depth: s = (x − origin)·axis, downstream of the aperture's plane.
+float beam_depth(Beam b, vec3 x) { return dot(x - b.origin, b.axis); }
+
+// optics::inside_beam: the closed box, beam_uv in [0, 1]² and 0 <= s <= length.
+bool inside_beam(Beam b, vec3 x) {
+  vec2 uv = beam_uv(b, x);
+  float s = beam_depth(b, x);
+  return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))) && s >= 0.0 && s <= b.length;
 }
 
 // The distance falloff of optics::arrival for point and spot lights:

@@ -32,11 +32,11 @@ struct FrameBlock {
 };
 
 struct GpuLight {
-  glm::vec4 position;    // w: cone (rad)
+  glm::vec4 position;    // xyz: position, or a beam's origin; w: cone (rad), or beam length (0: no beam)
   glm::vec4 direction;   // w: edge (rad)
   glm::vec4 color;       // w: tan(cone) for gobo_uv, 0 when cone >= 90°
-  glm::vec4 gobo_right;
-  glm::vec4 gobo_up;
+  glm::vec4 gobo_right;  // xyz: gobo / beam frame; w: beam width
+  glm::vec4 gobo_up;     // xyz; w: beam height
   glm::mat4 shadow_matrix;
   glm::ivec4 meta;       // type, shadow kind, shadow slot, gobo layer
   glm::vec4 shadow;      // texel footprint = (x·distance + y) / resolution
@@ -110,18 +110,32 @@ Projection spot_projection(const Light& light, const Bounds& b) {
   return {glm::mat4(proj * view), static_cast<float>(2.0 * std::tan(cone)), 0.0f};
 }
 
-// A directional light: orthographic, fitted to the scene's bounds seen along the
-// light (every ray through the bounds lands inside; points outside are lit).
+// A directional light: orthographic along the light, its depth range over the
+// scene's bounds (every occluder), its x/y extent over the bounds too (every
+// ray through them lands inside; points outside are lit) — or, for a beam,
+// over the beam's aperture: only points inside the beam are lit, so the
+// texels are spent there.
 Projection directional_projection(const Light& light, const Bounds& b) {
-  const glm::dvec3 dir = glm::normalize(glm::dvec3(light.direction)), centre = 0.5 * (b.lo + b.hi);
-  const glm::dmat4 view = glm::lookAt(centre, centre + dir, up_hint(dir));
+  const glm::dvec3 dir = glm::normalize(glm::dvec3(light.direction));
+  glm::dvec3 eye = 0.5 * (b.lo + b.hi), up = up_hint(dir);
+  if (optics::has_beam(light)) {
+    glm::dvec3 right;
+    optics::gobo_frame(light, right, up);  // lookAt's x is then dir × up = right: the beam's frame
+    eye = glm::dvec3(light.beam->origin);
+  }
+  const glm::dmat4 view = glm::lookAt(eye, eye + dir, up);
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (int k = 0; k < 8; ++k) {
     const glm::dvec3 p(view * glm::dvec4(b.corner(k), 1.0));
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
-  const double margin = 1e-3 * glm::length(b.hi - b.lo) + 1e-6;
+  if (optics::has_beam(light)) {
+    const glm::dvec2 half = 0.5 * glm::dvec2(light.beam->size);
+    lo = glm::dvec3(-half, lo.z);
+    hi = glm::dvec3(half, hi.z);
+  }
+  const double margin = 1e-3 * glm::length(hi - lo) + 1e-6;
   lo -= margin;
   hi += margin;
   const glm::dmat4 proj = glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z, -lo.z);  // view looks along -z
@@ -152,23 +166,27 @@ int shadow_kind(const Light& light, const Bounds& bounds) {
   return shadow_map;
 }
 
-bool has_gobo(const Light& light) { return light.type == LightType::spot && light.gobo && !light.gobo->empty(); }
+// The lights whose gobo the GPU samples: spots and beams (a gobo means nothing elsewhere).
+bool has_gobo(const Light& light) {
+  return (light.type == LightType::spot || optics::has_beam(light)) && light.gobo && !light.gobo->empty();
+}
 
 GpuLight light_record(const Light& light, int gobo_layer) {
   GpuLight g{};
   const double cone = radians(light.cone_deg);
   const glm::vec3 dir = glm::normalize(light.direction);
-  const bool spot = light.type == LightType::spot;
+  const bool spot = light.type == LightType::spot, beam = optics::has_beam(light);
   g.position = glm::vec4(light.position, spot ? static_cast<float>(cone) : 0.0f);
+  if (beam) g.position = glm::vec4(light.beam->origin, light.beam->length);
   g.direction = glm::vec4(dir, spot ? static_cast<float>(radians(light.edge_deg)) : 0.0f);
   const glm::vec3 color = light.type == LightType::directional ? light.irradiance : light.intensity;
   const bool square = spot && cone < 0.5 * std::numbers::pi;  // gobo_uv needs tan(cone) finite
   g.color = glm::vec4(color, square ? static_cast<float>(std::tan(cone)) : 0.0f);
-  if (spot) {
+  if (spot || beam) {
     glm::dvec3 right, up;
     optics::gobo_frame(light, right, up);
-    g.gobo_right = glm::vec4(glm::vec3(right), 0.0f);
-    g.gobo_up = glm::vec4(glm::vec3(up), 0.0f);
+    g.gobo_right = glm::vec4(glm::vec3(right), beam ? light.beam->size.x : 0.0f);
+    g.gobo_up = glm::vec4(glm::vec3(up), beam ? light.beam->size.y : 0.0f);
   }
   g.meta = glm::ivec4(static_cast<int>(light.type), shadow_none, 0, gobo_layer);
   return g;
@@ -309,7 +327,7 @@ void SharedFrame::upload_media(const Scene& scene) {
   volumes_ = storage(volumes);
 }
 
-// One RGBA32F array layer per spot light with a gobo, at the largest gobo's size.
+// One RGBA32F array layer per spot or beam with a gobo, at the largest gobo's size.
 void SharedFrame::upload_gobos(const Scene& scene) {
   const Image* largest = nullptr;
   int layers = 0;

@@ -241,6 +241,30 @@ TEST(Frame, SpotWithGoboAndSmoothEdge) {
   expect_surface_close(s, 0.03, 0.003, "2 shadow-edge pixels through a 1024² map of a 70° field (measured 0.017)");
 }
 
+// A beam (a directional light bounded to a box) with a gobo across its
+// aperture, tilted onto the floor: the gobo's image, the beam's edges and the
+// box's and pillar's shadows inside it. The shadow map spans only the 4 m × 3 m
+// aperture (frame.cpp directional_projection).
+Light beam_light(const glm::vec3& direction) {
+  Light light = directional_light(direction, 3.0f);
+  light.gobo_up = {0, 0, -1};
+  light.beam = Beam{{0.3f, 4.0f, 0.2f}, {4.0f, 3.0f}, 7.0f};
+  light.gobo = test_gobo();
+  return light;
+}
+
+TEST(Frame, BeamWithGoboOntoTheFloor) {
+  Scene s = shadow_scene(beam_light({0.3f, -1.0f, -0.2f}));
+  s.name = "beam";
+  // Only the beam's footprint is lit, so the image's mean is low and each
+  // pixel flipping at a shadow edge weighs much: measured 0.110, all of it two
+  // pixels whose centres lie 2 mm inside the box's shadow edge (x = 0.8), half
+  // a texel of the map (1024² over the 4 m aperture: 4 mm texels), whose
+  // nearest texel lies outside the shadow. Every other pixel, gobo and beam
+  // edges included, agrees to 1%.
+  expect_surface_close(s, 0.15, 0.001, "2 pixels 2 mm inside the box's shadow edge, half a shadow-map texel");
+}
+
 TEST(Frame, WideSpotUsesACubeMap) {
   static_assert(wide_spot_deg < 75.0f);
   Scene s = shadow_scene(spot_light({0.3f, 3.0f, 1.0f}, {0.0f, 0.0f, -0.5f}, 40.0f, 75.0f, 10.0f));

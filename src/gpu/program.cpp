@@ -125,5 +125,8 @@ void set_uniform(const Program& p, const char* name, const glm::vec4& v) {
 void set_uniform(const Program& p, const char* name, const glm::mat4& v) {
   glProgramUniformMatrix4fv(p.id(), location(p, name), 1, GL_FALSE, glm::value_ptr(v));
 }
+void set_uniform(const Program& p, const char* name, const std::vector<glm::vec4>& v) {
+  if (!v.empty()) glProgramUniform4fv(p.id(), location(p, name), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+}
 
 }  // namespace airlight::gpu

@@ -12,6 +12,7 @@
 #include <initializer_list>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace airlight::gpu {
 
@@ -35,5 +36,7 @@ void set_uniform(const Program& p, const char* name, const glm::vec2& v);
 void set_uniform(const Program& p, const char* name, const glm::vec3& v);
 void set_uniform(const Program& p, const char* name, const glm::vec4& v);
 void set_uniform(const Program& p, const char* name, const glm::mat4& v);
+// A vec4 array uniform, elements 0 .. v.size() − 1.
+void set_uniform(const Program& p, const char* name, const std::vector<glm::vec4>& v);
 
 }  // namespace airlight::gpu

@@ -30,17 +30,19 @@ namespace airlight::gpu::twin {
 inline constexpr double pi = std::numbers::pi;
 
 // Runs gpu/twin_shaders/<shader> over inputs.size() / in_stride cases (the
-// layout of twin_io.glsl) and returns out_stride vec4s per case.
+// layout of twin_io.glsl) and returns out_stride vec4s per case. `defines`
+// are prepended to the shader; `binding` is its TWIN_BINDING (twin_io.glsl).
 inline std::vector<glm::vec4> run_twin(const std::string& shader, const std::vector<glm::vec4>& inputs,
-                                int in_stride, int out_stride) {
+                                int in_stride, int out_stride, const std::string& defines = "",
+                                GLuint binding = 0) {
   Context& context = Context::headless();
-  const Program program = make_compute_program("gpu/twin_shaders/" + shader);
+  const Program program = make_compute_program("gpu/twin_shaders/" + shader, defines);
   const int count = static_cast<int>(inputs.size()) / in_stride;
   const Buffer in = make_buffer(inputs.size() * sizeof(glm::vec4), inputs.data());
   const size_t out_bytes = static_cast<size_t>(count) * out_stride * sizeof(glm::vec4);
   const Buffer out = make_buffer(out_bytes, nullptr);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, in.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding + 1, out.id());
   glUseProgram(program.id());
   set_uniform(program, "count", count);
   glDispatchCompute((count + 63) / 64, 1, 1);

@@ -1,5 +1,6 @@
 // Every method registers here with one line (DESIGN §3).
 #include "methods/interleaved/interleaved_method.hpp"
+#include "methods/planes/planes_method.hpp"
 #include "methods/raymarch/raymarch_method.hpp"
 #include "methods/reference/reference_method.hpp"
 
@@ -13,6 +14,7 @@ const std::vector<MethodInfo>& registered_methods() {
       methods::reference_method(),
       methods::raymarch_method(),
       methods::interleaved_method(),
+      methods::planes_method(),
   };
   return all;
 }

@@ -90,6 +90,11 @@ glm::dvec3 inscatter(const Scene& scene, const Light& light, const Ray& ray, dou
 glm::dvec3 airlight_quadrature(const Scene& scene, const Light& light, const Ray& ray, double t0,
                                double t1, const Visibility& visible,
                                const QuadratureSettings& settings) {
+  if (has_beam(light)) {  // nothing outside the box, a jump at its faces: integrate inside only
+    const Interval inside = beam_interval(light, ray.origin, ray.dir, t0, t1);
+    t0 = inside.lo;
+    t1 = inside.hi;
+  }
   if (!(t1 > t0)) return glm::dvec3(0.0);
   const double resolution = 1e-6 * (t1 - t0);  // of shadow boundaries
   auto evaluate = [&](double a, double b) {

@@ -27,7 +27,9 @@ struct QuadratureSettings {
   int max_depth = 30;      // bisections of an initial panel
 };
 
-// ∫_{t0}^{t1} V(x)·e(x) dx per channel (t1 finite; 0 if t1 <= t0). Panels break
+// ∫_{t0}^{t1} V(x)·e(x) dx per channel (t1 finite; 0 if t1 <= t0). A beam
+// light's integral runs over the part inside its box only (beam_interval,
+// light.hpp), so that no panel straddles the box's faces, where e jumps. Panels break
 // at volume crossings, at the ends of the parts inside the spot's cone and its
 // inner-edge cone (cone_intervals, light.hpp), at the foot of the
 // perpendicular from a point or spot light with geometric grading around it (1/r²

@@ -61,10 +61,37 @@ bool inside_unit_square(const glm::dvec2& uv) {
   return uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0;
 }
 
-glm::dvec3 gobo_colour(const Light& light, const glm::dvec3& dir) {
-  if (!light.gobo || light.gobo->empty()) return glm::dvec3(1.0);
-  const glm::dvec2 uv = gobo_uv(light, dir);
-  return inside_unit_square(uv) ? sample_gobo(*light.gobo, uv) : glm::dvec3(0.0);
+bool has_gobo(const Light& light) { return light.gobo && !light.gobo->empty(); }
+
+// The gobo's colour at uv: black outside the unit square (DESIGN §1).
+glm::dvec3 gobo_colour(const Image& gobo, const glm::dvec2& uv) {
+  return inside_unit_square(uv) ? sample_gobo(gobo, uv) : glm::dvec3(0.0);
+}
+
+// A spot's light map toward unit `dir` from it: cone factor · gobo colour.
+glm::dvec3 spot_map(const Light& light, const glm::dvec3& dir) {
+  const double cone = spot_cone(light, dir);
+  if (cone == 0.0 || !has_gobo(light)) return glm::dvec3(cone);
+  return cone * gobo_colour(*light.gobo, gobo_uv(light, dir));
+}
+
+// x − beam.origin in the beam's frame: (along right, along up, along the axis).
+glm::dvec3 beam_coordinates(const Light& light, const glm::dvec3& x) {
+  glm::dvec3 right, up;
+  gobo_frame(light, right, up);
+  const glm::dvec3 d = x - glm::dvec3(light.beam->origin);
+  return {glm::dot(d, right), glm::dot(d, up), glm::dot(d, spot_axis(light))};
+}
+
+// beam_uv of a point with beam coordinates p.
+glm::dvec2 across(const Beam& beam, const glm::dvec3& p) {
+  return glm::dvec2(0.5) + glm::dvec2(p) / glm::dvec2(beam.size);
+}
+
+// A beam's light map at x: inside the box, the gobo colour across the aperture.
+glm::dvec3 beam_map(const Light& light, const glm::dvec3& x) {
+  if (!inside_beam(light, x)) return glm::dvec3(0.0);
+  return has_gobo(light) ? gobo_colour(*light.gobo, beam_uv(light, x)) : glm::dvec3(1.0);
 }
 
 }  // namespace
@@ -140,11 +167,48 @@ glm::dvec3 sample_gobo(const Image& gobo, const glm::dvec2& uv) {
   return glm::mix(top, bottom, wy);
 }
 
+glm::dvec2 beam_uv(const Light& light, const glm::dvec3& x) {
+  return across(*light.beam, beam_coordinates(light, x));
+}
+
+double beam_depth(const Light& light, const glm::dvec3& x) {
+  return glm::dot(x - glm::dvec3(light.beam->origin), spot_axis(light));
+}
+
+bool inside_beam(const Light& light, const glm::dvec3& x) {
+  const glm::dvec3 p = beam_coordinates(light, x);
+  return inside_unit_square(across(*light.beam, p)) && p.z >= 0.0 && p.z <= light.beam->length;
+}
+
+Interval beam_interval(const Light& light, const glm::dvec3& origin, const glm::dvec3& dir, double t0,
+                       double t1) {
+  glm::dvec3 right, up;
+  gobo_frame(light, right, up);
+  const glm::dvec3 d(glm::dot(dir, right), glm::dot(dir, up), glm::dot(dir, spot_axis(light)));
+  const Beam& beam = *light.beam;
+  const glm::dvec3 half(0.5 * beam.size.x, 0.5 * beam.size.y, 0.0);
+  return slab_overlap(beam_coordinates(light, origin), d, -half, half + glm::dvec3(0, 0, beam.length), t0, t1);
+}
+
+glm::dvec3 light_map(const Light& light, const glm::dvec3& x) {
+  switch (light.type) {
+    case LightType::point: break;
+    case LightType::spot: {
+      const glm::dvec3 delta = x - glm::dvec3(light.position);
+      const double r = glm::length(delta);
+      return spot_map(light, r > 0.0 ? delta / r : spot_axis(light));  // at the light: arrival's axis
+    }
+    case LightType::directional:
+      if (has_beam(light)) return beam_map(light, x);
+      break;
+  }
+  return glm::dvec3(1.0);
+}
+
 glm::dvec3 radiant_intensity(const Light& light, const glm::dvec3& dir) {
   switch (light.type) {
     case LightType::point: return glm::dvec3(light.intensity);
-    case LightType::spot:
-      return glm::dvec3(light.intensity) * spot_cone(light, dir) * gobo_colour(light, dir);
+    case LightType::spot: return glm::dvec3(light.intensity) * spot_map(light, dir);
     case LightType::directional: return glm::dvec3(light.irradiance);
   }
   return glm::dvec3(0.0);
@@ -153,7 +217,7 @@ glm::dvec3 radiant_intensity(const Light& light, const glm::dvec3& dir) {
 Arrival arrival(const Light& light, const LightModel& model, const glm::dvec3& x) {
   Arrival a;
   if (light.type == LightType::directional) {
-    a.irradiance = glm::dvec3(light.irradiance);
+    a.irradiance = glm::dvec3(light.irradiance) * light_map(light, x);
     a.to_light = -glm::normalize(glm::dvec3(light.direction));
     a.distance = std::numeric_limits<double>::infinity();
     return a;

@@ -1,10 +1,13 @@
 #pragma once
 // What a light sends toward a point: radiant intensity I(ω) of point and spot
-// lights (cone, smooth edge, gobo), and the distance attenuation of each light model.
+// lights (cone, smooth edge, gobo), a directional light's beam (bounded box,
+// gobo across its aperture), and the distance attenuation of each light model.
 #include <airlight/scene.hpp>
 #include <array>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "optics/slab.hpp"
 
 namespace airlight::optics {
 
@@ -47,6 +50,37 @@ glm::dvec2 gobo_uv(const Light& light, const glm::dvec3& dir);
 // Bilinear lookup with clamp-to-edge; (u, v) as gobo_uv returns.
 glm::dvec3 sample_gobo(const Image& gobo, const glm::dvec2& uv);
 
+// ---- a directional light's beam (scene.hpp Beam); light.beam must be set ------
+// The box: the aperture rectangle of size w × h centred at beam.origin,
+// spanned by gobo_frame's right (width) and up (height), perpendicular to the
+// light's direction, extended beam.length downstream.
+
+// Whether the light is directional with a beam (a beam on other lights means nothing).
+inline bool has_beam(const Light& light) { return light.type == LightType::directional && light.beam; }
+
+// Gobo coordinates of x across the aperture: u = 0.5 + (x − origin)·right / w,
+// v = 0.5 + (x − origin)·up / h (v = 1 toward up, as gobo_uv); [0, 1]² inside.
+glm::dvec2 beam_uv(const Light& light, const glm::dvec3& x);
+
+// s = (x − origin)·direction: how far downstream of the aperture's plane x lies.
+double beam_depth(const Light& light, const glm::dvec3& x);
+
+// Whether x lies in the closed box: beam_uv in [0, 1]² and 0 <= s <= length.
+bool inside_beam(const Light& light, const glm::dvec3& x);
+
+// The part of [t0, t1] of the line origin + t·dir (unit) inside the box, by
+// slabs in the beam's frame (slab.hpp): empty() when the line misses it. A
+// line parallel to a face (exactly or to rounding) gives no NaN.
+Interval beam_interval(const Light& light, const glm::dvec3& origin, const glm::dvec3& dir, double t0,
+                       double t1);
+
+// The light map (Dobashi 2000 §4: I(θ, φ) stored as a texture): the unitless
+// per-channel factor of what the light sends to x that depends on where x is
+// across the light — spot: spot_cone · gobo colour toward x; directional with
+// a beam: (x inside the beam) · gobo colour at beam_uv(x) (1 without a gobo);
+// point light and unbounded directional light: 1.
+glm::dvec3 light_map(const Light& light, const glm::dvec3& x);
+
 // I(ω) in W/sr per channel for point and spot lights toward unit `dir` from the
 // light (intensity · cone factor · gobo colour); a directional light's irradiance.
 glm::dvec3 radiant_intensity(const Light& light, const glm::dvec3& dir);
@@ -59,10 +93,11 @@ inline constexpr double min_light_distance = 1e-6;
 
 // What arrives at `x` from the light, before visibility and extinction on the
 // light's leg: I(ω)/r² (physical), I(ω)/(a1 r² + a0) (simplified, Nilsson eq. 2.13),
-// or the irradiance of a directional light. `to_light` receives the unit
-// direction from x toward the light and `distance` the distance (infinity for
-// directional lights). Directional lights send their irradiance under both
-// light models (no distance falloff); r is clamped at min_light_distance.
+// or the irradiance of a directional light times its light_map (a beam's
+// box and gobo). `to_light` receives the unit direction from x toward the
+// light and `distance` the distance (infinity for directional lights).
+// Directional lights send their irradiance under both light models (no
+// distance falloff); r is clamped at min_light_distance.
 struct Arrival {
   glm::dvec3 irradiance{0.0};
   glm::dvec3 to_light{0.0};

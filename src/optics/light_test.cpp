@@ -9,10 +9,12 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "optics/cone_test_cases.hpp"
+#include "optics/test_support.hpp"
 
 namespace airlight::optics {
 namespace {
@@ -128,6 +130,132 @@ TEST(Light, ArrivalModels) {
   const Arrival at = arrival(l, LightModel{}, glm::dvec3(l.position));
   EXPECT_NEAR(at.irradiance.x, 50.0 / (min_light_distance * min_light_distance), 1e-3);
   EXPECT_TRUE(std::isfinite(glm::length(at.to_light)));
+}
+
+// ------------------------------------------------------------ beams
+
+// A vertical beam whose frame is the spot's above: right = (-1, 0, 0), up =
+// (0, 0, 1). The aperture, 2 m along right by 1 m along up, is centred at
+// (1, 4, 2); 5 m long: the box x ∈ [0, 2], y ∈ [-1, 4], z ∈ [1.5, 2.5].
+Light vertical_beam() { return testing::beam_light({0, -1, 0}, {0, 0, 1}, Beam{{1, 4, 2}, {2, 1}, 5}, 3.0f); }
+
+void expect_uv(const glm::dvec2& uv, double u, double v) {
+  EXPECT_NEAR(uv.x, u, 1e-15);  // exact up to rounding: inputs are binary fractions
+  EXPECT_NEAR(uv.y, v, 1e-15);
+}
+
+TEST(Beam, CoordinatesAcrossTheApertureAndDepth) {
+  const Light l = vertical_beam();
+  expect_uv(beam_uv(l, {1, 4, 2}), 0.5, 0.5);
+  expect_uv(beam_uv(l, {0, 4, 2}), 1.0, 0.5);       // along right (-x) by w/2
+  expect_uv(beam_uv(l, {1, 0, 2.5}), 0.5, 1.0);     // along up (+z) by h/2: v = 1, the top row
+  expect_uv(beam_uv(l, {1.5, 2, 1.75}), 0.25, 0.25);
+  EXPECT_NEAR(beam_depth(l, {1.5, 2, 1.75}), 2.0, 1e-15);
+  EXPECT_NEAR(beam_depth(l, {7, 6, -3}), -2.0, 1e-15);  // upstream of the aperture
+}
+
+TEST(Beam, InsideIsTheClosedBox) {
+  const Light l = vertical_beam();
+  for (const glm::dvec3& in : {glm::dvec3(1, 4, 2), glm::dvec3(1, -1, 2), glm::dvec3(0, 2, 2.5),
+                               glm::dvec3(2, -1, 1.5), glm::dvec3(0.3, 1, 1.9)})
+    EXPECT_TRUE(inside_beam(l, in)) << in.x << ", " << in.y << ", " << in.z;
+  for (const glm::dvec3& out : {glm::dvec3(1, 4.001, 2), glm::dvec3(1, -1.001, 2), glm::dvec3(2.001, 2, 2),
+                                glm::dvec3(-0.001, 2, 2), glm::dvec3(1, 2, 1.499), glm::dvec3(1, 2, 2.501)})
+    EXPECT_FALSE(inside_beam(l, out)) << out.x << ", " << out.y << ", " << out.z;
+}
+
+TEST(Beam, LightMapAndArrivalCarryTheBoxAndTheGobo) {
+  Light l = vertical_beam();
+  EXPECT_EQ(light_map(l, {1, 0, 2}), glm::dvec3(1.0));  // inside, no gobo
+  EXPECT_EQ(light_map(l, {1, 5, 2}), glm::dvec3(0.0));  // upstream
+  l.gobo = std::make_shared<Image>(two_by_two());
+  // uv (0.75, 0.75) is the top-right texel's centre (green): x = 1 - 0.25·2, z = 2 + 0.25·1.
+  const glm::dvec3 x(0.5, 1.0, 2.25);
+  EXPECT_NEAR(glm::length(light_map(l, x) - glm::dvec3(0, 1, 0)), 0.0, 1e-12);
+  const Arrival a = arrival(l, LightModel{}, x);
+  EXPECT_NEAR(glm::length(a.irradiance - glm::dvec3(0, 3, 0)), 0.0, 1e-12);
+  EXPECT_EQ(a.to_light, glm::dvec3(0, 1, 0));
+  EXPECT_TRUE(std::isinf(a.distance));
+  EXPECT_EQ(arrival(l, LightModel{}, {3, 1, 2}).irradiance, glm::dvec3(0.0));  // beside the beam
+  // The simplified model changes nothing for a directional light (no falloff).
+  EXPECT_EQ(arrival(l, LightModel{LightModelType::simplified, 0.5f, 2.0f}, x).irradiance, a.irradiance);
+  // Without a beam a directional light (even with a stray gobo) reaches everywhere.
+  l.beam.reset();
+  EXPECT_EQ(light_map(l, {1, 5, 2}), glm::dvec3(1.0));
+}
+
+TEST(Light, LightMapOfSpotAndPointLights) {
+  Light s = spot(30.0f, 0.0f);
+  s.gobo = std::make_shared<Image>(two_by_two());
+  const glm::dvec3 x(-0.5, 2.0, 0.7);
+  const glm::dvec3 dir = glm::normalize(x - glm::dvec3(s.position));
+  // I(ω) = intensity · light map; 1e-12: normalize and v / |v| round differently.
+  EXPECT_NEAR(glm::length(light_map(s, x) * 100.0 - radiant_intensity(s, dir)), 0.0, 1e-12);
+  EXPECT_GT(light_map(s, x).y, 0.0);
+  EXPECT_EQ(light_map(s, {3, 0, 0}), glm::dvec3(0.0));              // outside the cone
+  EXPECT_TRUE(std::isfinite(light_map(s, glm::dvec3(s.position)).x));  // at the apex: the axis
+  EXPECT_EQ(light_map(testing::point_light({1, 2, 3}, 5.0f), x), glm::dvec3(1.0));
+}
+
+void expect_interval(const Interval& in, double lo, double hi, const char* what) {
+  EXPECT_NEAR(in.lo, lo, 1e-12) << what;  // exact up to rounding
+  EXPECT_NEAR(in.hi, hi, 1e-12) << what;
+}
+
+TEST(Beam, IntervalsOfSimpleLines) {
+  const Light l = vertical_beam();
+  const glm::dvec3 x(1, 0, 0), y(0, 1, 0);
+  expect_interval(beam_interval(l, {-5, 2, 2}, x, 0, 20), 5, 7, "across, along +x");
+  expect_interval(beam_interval(l, {-5, 2, 2}, x, 0, 6), 5, 6, "clipped by t1");
+  expect_interval(beam_interval(l, {-5, 2, 2.5}, x, 0, 20), 5, 7, "in the plane of the up face: closed");
+  expect_interval(beam_interval(l, {1, 10, 2}, -y, 0, 20), 6, 11, "down the axis through both ends");
+  expect_interval(beam_interval(l, {1, 2, 2}, y, 0, 20), 0, 2, "from inside back up to the aperture");
+  EXPECT_TRUE(beam_interval(l, {-5, 2, 3}, x, 0, 20).empty()) << "beside the box";
+  EXPECT_TRUE(beam_interval(l, {-5, 2, 2.5001}, x, 0, 20).empty()) << "just off the up face";
+  EXPECT_TRUE(beam_interval(l, {-5, 2, 2}, x, 0, 4).empty()) << "ends before the box";
+  EXPECT_TRUE(beam_interval(l, {-5, 2, 2}, x, 6, 6).empty()) << "empty range";
+}
+
+// Random tilted beams and lines, among them lines along the frame's axes
+// (parallel to faces to rounding): every sample whose inside_beam verdict is
+// more than 1e-9 m from an end must agree with the interval, which is never NaN.
+TEST(Beam, IntervalsMatchSamplingOfInsideBeam) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto random_vector = [&] { return glm::dvec3(u(rng), u(rng), u(rng)); };
+  constexpr int samples = 2000;
+  int mismatches = 0, lines_inside = 0;
+  for (int i = 0; i < 600; ++i) {
+    const glm::dvec3 direction = glm::normalize(random_vector() + glm::dvec3(0, 0.1, 0));
+    const Beam beam{glm::vec3(3.0 * random_vector()), {0.5 + 2.0 * (u(rng) + 1), 0.5 + 2.0 * (u(rng) + 1)},
+                    float(1.0 + 4.0 * (u(rng) + 1))};
+    const Light l = testing::beam_light(glm::vec3(direction), glm::vec3(random_vector()), beam, 1.0f);
+    glm::dvec3 right, up;
+    gobo_frame(l, right, up);
+    const glm::dvec3 axes[] = {right, up, glm::dvec3(glm::normalize(l.direction))};
+    const glm::dvec3 dir = i % 2 ? glm::normalize(random_vector()) : (i % 4 ? 1.0 : -1.0) * axes[i / 2 % 3];
+    // Origins near the box: its centre plus up to its size in every direction.
+    const glm::dvec3 centre = glm::dvec3(beam.origin) + 0.5 * beam.length * axes[2];
+    const glm::dvec3 origin = centre + 0.5 * double(beam.size.x) * u(rng) * right +
+                              0.5 * double(beam.size.y) * u(rng) * up + 0.5 * double(beam.length) * u(rng) * axes[2] -
+                              10.0 * dir;
+    const double t0 = 0.0, t1 = 20.0;
+    const Interval in = beam_interval(l, origin, dir, t0, t1);
+    ASSERT_FALSE(std::isnan(in.lo) || std::isnan(in.hi)) << "case " << i;
+    if (!in.empty()) {
+      ++lines_inside;
+      EXPECT_GE(in.lo, t0);
+      EXPECT_LE(in.hi, t1);
+    }
+    for (int k = 0; k < samples; ++k) {
+      const double t = t0 + (t1 - t0) * (k + 0.5) / samples;
+      if (!in.empty() && std::min(std::abs(t - in.lo), std::abs(t - in.hi)) < 1e-9) continue;
+      const bool within = !in.empty() && t >= in.lo && t <= in.hi;
+      if (inside_beam(l, origin + t * dir) != within && ++mismatches <= 8)
+        ADD_FAILURE() << "case " << i << " t " << t << " interval [" << in.lo << ", " << in.hi << "]";
+    }
+  }
+  EXPECT_GT(lines_inside, 300);  // the cases do cross the box
 }
 
 // ------------------------------------------------------------ cone_intervals

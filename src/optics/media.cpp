@@ -6,34 +6,19 @@
 #include <limits>
 #include <numbers>
 
+#include "optics/light.hpp"
 #include "optics/phase.hpp"
+#include "optics/slab.hpp"
 
 namespace airlight::optics {
 namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-struct Interval {
-  double lo, hi;
-  bool empty() const { return !(lo < hi); }
-};
-
-// Slab test: the part of [t0, t1] where origin + t·dir lies inside the box.
+// The part of [t0, t1] where origin + t·dir lies inside the box.
 Interval box_overlap(const Volume& box, const glm::dvec3& origin, const glm::dvec3& dir, double t0,
                      double t1) {
-  Interval in{t0, t1};
-  for (int axis = 0; axis < 3; ++axis) {
-    const double lo = box.min[axis], hi = box.max[axis], o = origin[axis], d = dir[axis];
-    if (d == 0.0) {
-      if (o < lo || o > hi) return {0.0, 0.0};
-      continue;
-    }
-    double ta = (lo - o) / d, tb = (hi - o) / d;
-    if (ta > tb) std::swap(ta, tb);
-    in.lo = std::max(in.lo, ta);
-    in.hi = std::min(in.hi, tb);
-  }
-  return in;
+  return slab_overlap(origin, dir, glm::dvec3(box.min), glm::dvec3(box.max), t0, t1);
 }
 
 bool contains(const Volume& box, const glm::dvec3& x) {
@@ -71,9 +56,13 @@ glm::dvec3 eye_leg_depth(const Scene& scene, const glm::dvec3& a, const glm::dve
 glm::dvec3 light_leg_depth(const Scene& scene, const Light& light, const glm::dvec3& x) {
   if (simplified(scene)) return glm::dvec3(0.0);  // Nilsson eq. 2.15: T = 1
   if (light.type != LightType::directional) return optical_depth(scene, x, glm::dvec3(light.position));
+  const glm::dvec3 to_light = -glm::normalize(glm::dvec3(light.direction));
+  // A beam is emitted at its aperture (docs/decisions.md): the leg is the
+  // segment back to the aperture's plane, through the medium and the volumes.
+  // s < 0 (upstream, where the beam sends nothing) counts as 0, keeping exp(-τ) <= 1.
+  if (has_beam(light)) return optical_depth(scene, x, x + std::max(beam_depth(light, x), 0.0) * to_light);
   // DESIGN §1: sunlight arrives unattenuated by the filling medium; bounded
   // volumes between x and infinity (toward the light) still absorb.
-  const glm::dvec3 to_light = -glm::normalize(glm::dvec3(light.direction));
   return volumes_depth(scene, x, to_light, 0.0, infinity);
 }
 

@@ -17,7 +17,10 @@ glm::dvec3 eye_leg_depth(const Scene& scene, const glm::dvec3& a, const glm::dve
 
 // Optical depth of a light's leg from x: to the light's position for point and
 // spot lights; for directional lights only through bounded volumes (the filling
-// medium has no extinction on that leg, DESIGN §1), along -direction.
+// medium has no extinction on that leg, DESIGN §1), along -direction; for a
+// directional light with a beam, emitted at its aperture, along the segment
+// from x back to the aperture's plane, x − s·direction with s = beam_depth(x)
+// (0 for x upstream of the aperture): σt_medium·s plus the volumes' chords.
 // Zero under the simplified light model (T = 1).
 glm::dvec3 light_leg_depth(const Scene& scene, const Light& light, const glm::dvec3& x);
 

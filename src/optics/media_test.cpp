@@ -57,6 +57,37 @@ TEST(Media, LightLegs) {
   EXPECT_EQ(eye_leg_depth(s, {0.5, -1, 0.5}, {0.5, 3, 0.5}), glm::dvec3(0.0));
 }
 
+TEST(Media, BeamLegRunsBackToTheAperture) {
+  Scene s = foggy_box();
+  // A beam down through the box, its aperture at y = 3 (σt medium 0.1, box 0.75).
+  Light beam;
+  beam.type = LightType::directional;
+  beam.direction = {0, -1, 0};
+  beam.gobo_up = {0, 0, 1};
+  beam.beam = Beam{{0.5f, 3.0f, 0.5f}, {4.0f, 4.0f}, 10.0f};
+  // Below the box: 4 m from the aperture, 1 m of them in the box.
+  EXPECT_NEAR(light_leg_depth(s, beam, {0.5, -1, 0.5}).x, 4 * 0.1 + 0.75, 1e-6);
+  // Inside the box: 2.5 m from the aperture, the top 0.5 m of the box.
+  EXPECT_NEAR(light_leg_depth(s, beam, {0.5, 0.5, 0.5}).x, 2.5 * 0.1 + 0.5 * 0.75, 1e-6);
+  // Off the axis, beside the box: medium only.
+  EXPECT_NEAR(light_leg_depth(s, beam, {2, -1, 2}).x, 4 * 0.1, 1e-6);
+  // At the aperture and upstream of it (where the beam sends nothing): no leg.
+  EXPECT_EQ(light_leg_depth(s, beam, {0.5, 3, 0.5}), glm::dvec3(0.0));
+  EXPECT_EQ(light_leg_depth(s, beam, {0.5, 5, 0.5}), glm::dvec3(0.0));
+  // A volume upstream of the aperture absorbs nothing of the beam...
+  Volume above = s.volumes[0];
+  above.min = {0, 4, 0};
+  above.max = {1, 5, 1};
+  s.volumes.push_back(above);
+  EXPECT_NEAR(light_leg_depth(s, beam, {0.5, -1, 0.5}).x, 4 * 0.1 + 0.75, 1e-6);
+  // ...but everything of an unbounded sun (DESIGN §1: volumes only, to infinity).
+  Light sun = beam;
+  sun.beam.reset();
+  EXPECT_NEAR(light_leg_depth(s, sun, {0.5, -1, 0.5}).x, 2 * 0.75, 1e-6);
+  s.light_model.type = LightModelType::simplified;  // Nilsson eq. 2.15: T = 1
+  EXPECT_EQ(light_leg_depth(s, beam, {0.5, -1, 0.5}), glm::dvec3(0.0));
+}
+
 TEST(Media, ScatteringAddsVolumes) {
   Scene s = foggy_box();
   const double iso = 1.0 / (4.0 * std::numbers::pi);

@@ -3,13 +3,17 @@
 #include <airlight/error.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <memory>
 #include <numbers>
 
 #include "geometry/camera.hpp"
 #include "optics/airlight.hpp"
 #include "optics/closed_form.hpp"
+#include "optics/light.hpp"
+#include "optics/test_support.hpp"
 
 namespace airlight::reference {
 namespace {
@@ -355,7 +359,105 @@ TEST(Reference, GeometryBeyondTheFarPlaneIsNotSeen) {
   EXPECT_EQ(total(frame.surface), 0.0);
 }
 
-// ---- (e) degenerate configurations -------------------------------------------
+// ---- (e) a directional light's beam --------------------------------------------
+
+// A vertical beam (right = −x, up = +z), aperture centred at (0, y, 0).
+Light vertical_beam(float y, glm::vec2 size, float length, float irradiance) {
+  return optics::testing::beam_light({0, -1, 0}, {0, 0, 1}, Beam{{0, y, 0}, size, length}, irradiance);
+}
+
+// The camera inside a wide beam (aperture 9 m above it, 100 m across, 30 m
+// long): every view ray starts inside and leaves through the aperture, through
+// the end, or not before the far plane; s(t) = 9 − dir.y·t. The closed form
+// of optics/test_support.hpp per pixel.
+TEST(Reference, UnoccludedBeamMatchesItsClosedFormOnEveryPixel) {
+  Scene scene = fog_scene(Color(0.05f), Color(0.02f));
+  scene.lights = {vertical_beam(10.0f, {100, 100}, 30.0f, 2.0f)};
+  const Frame frame = render(scene, 64, 48);  // default settings, as `airlight render` uses
+  EXPECT_EQ(frame.nonfinite, 0);
+  const double sigma_s = scene.medium.sigma_s.x, sigma_t = scene.medium.sigma_t().x;
+  double worst = 0.0;
+  for (int j = 0; j < 48; ++j)
+    for (int i = 0; i < 64; ++i) {
+      const optics::Ray ray = pixel_ray(scene, frame.airlight, i, j);
+      const double s0 = 10.0 - ray.origin.y, c = -ray.dir.y;
+      const double exit = c < 0.0 ? s0 / -c : (30.0 - s0) / c;  // the aperture or the end
+      const double b = std::min(geometry::far_distance(scene.camera, ray.dir), exit);
+      const double expected = optics::testing::beam_airlight(sigma_s, sigma_t, 2.0, s0, c, 0.0, b);
+      worst = std::max(worst, std::abs(frame.airlight.at(i, j).x - expected) / expected);
+      // 1e-6: float pixels (6e-8); the integrand is a smooth exponential on the
+      // beam's part of the ray, which the quadrature gets to rounding.
+      for (int k = 0; k < 3; ++k)
+        ASSERT_NEAR(frame.airlight.at(i, j)[k], expected, 1e-6 * expected) << i << "," << j;
+    }
+  std::printf("camera inside a beam: worst relative error %.2e\n", worst);
+}
+
+// A narrow beam crossing the view: the centre pixel of an odd image looks
+// along −z exactly, through the beam between z = 0.5 and −0.5 at s = 3; the
+// image's side columns miss the beam and must be exactly dark.
+TEST(Reference, BeamCrossingTheViewMatchesItsClosedForm) {
+  Scene scene = fog_scene(Color(0.05f), Color(0.02f));
+  scene.lights = {vertical_beam(4.0f, {2, 1}, 5.0f, 2.0f)};
+  const Frame frame = render(scene, 65, 49);
+  const optics::Ray centre = pixel_ray(scene, frame.airlight, 32, 24);
+  ASSERT_EQ(centre.dir, dvec3(0, 0, -1));
+  const double expected = optics::testing::beam_airlight(scene.medium.sigma_s.x, scene.medium.sigma_t().x, 2.0,
+                                                         3.0, 0.0, 5.5, 6.5);
+  // 1e-6: float pixels, as above.
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(frame.airlight.at(32, 24)[k], expected, 1e-6 * expected);
+  for (int j = 0; j < 49; ++j)
+    for (int i : {0, 64}) EXPECT_EQ(frame.airlight.at(i, j), glm::vec3(0.0f)) << i << "," << j;
+}
+
+// A floor under a beam with a gobo: inside the beam's footprint the floor
+// receives E·gobo(uv)·exp(−σt·4) (vertical light, cos θ_i = 1, 4 m below the
+// aperture); outside it only ambient light.
+TEST(Reference, FloorUnderABeamShowsItsGobo) {
+  PlaneScene p = plane_scene();
+  p.scene.medium.sigma_a = Color(0.1f);  // absorbing: the light's leg starts at the aperture
+  Light beam = vertical_beam(4.0f, {3, 2}, 10.0f, 5.0f);
+  auto gobo = std::make_shared<Image>(3, 2);
+  for (int k = 0; k < 6; ++k) gobo->pixels[k] = Color(0.1f + 0.15f * k, 1.0f - 0.1f * k, (k % 2) ? 1.0f : 0.3f);
+  beam.gobo = gobo;
+  p.scene.lights = {beam};
+  const Frame frame = render(p.scene, 64, 48);
+  int inside = 0, outside = 0;
+  for (int j = 0; j < 48; ++j)
+    for (int i = 0; i < 64; ++i) {
+      const FloorPoint f = floor_point(pixel_ray(p.scene, frame.surface, i, j));
+      const glm::dvec2 uv(0.5 - f.position.x / 3.0, 0.5 + f.position.z / 2.0);  // right = −x, up = +z
+      // Embree's float hit point (~1e-6 m): leave out pixels that close to the footprint's edge.
+      const double edge = std::min({uv.x, 1.0 - uv.x, uv.y, 1.0 - uv.y});
+      if (std::abs(edge) < 1e-4) continue;
+      const bool lit = edge > 0.0;
+      (lit ? inside : outside)++;
+      const dvec3 e = lit ? 5.0 * optics::sample_gobo(*gobo, uv) * std::exp(-0.1 * 4.0) : dvec3(0.0);
+      const dvec3 expected = dvec3(p.albedo) * (dvec3(p.scene.ambient) + e / pi) * std::exp(-0.1 * f.eye_distance);
+      // Embree's float hit distance and point (~1e-6 relative) and float pixels: 1e-4.
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(frame.surface.at(i, j)[c], expected[c], 1e-4 * expected[c]) << i << "," << j;
+    }
+  EXPECT_GT(inside, 300);
+  EXPECT_GT(outside, 300);
+}
+
+// Occluders toward the light cast shadows wherever they are, upstream of the
+// aperture too (docs/decisions.md): the beam bounds where light exists, and
+// the GPU's shadow maps see every occluder.
+TEST(Reference, OccluderUpstreamOfTheApertureShadowsTheBeam) {
+  PlaneScene p = plane_scene();
+  p.scene.lights = {vertical_beam(2.0f, {3, 2}, 10.0f, 5.0f)};
+  p.scene.meshes.push_back(box({-0.3f, 3.0f, -0.3f}, {0.3f, 3.5f, 0.3f}));  // above the aperture
+  const Frame frame = render(p.scene, 64, 48);
+  const optics::Ray ray = pixel_ray(p.scene, frame.surface, 32, 24);  // at the floor's centre
+  const FloorPoint f = floor_point(ray);
+  ASSERT_LT(std::max(std::abs(f.position.x), std::abs(f.position.z)), 0.2);
+  const dvec3 ambient_only = dvec3(p.albedo) * dvec3(p.scene.ambient);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(frame.surface.at(32, 24)[c], ambient_only[c], 1e-6);
+}
+
+// ---- (f) degenerate configurations -------------------------------------------
 
 TEST(Reference, CameraInsideTheSpotConeIsFinite) {
   Scene scene = fog_scene(Color(0.05f), Color(0.01f));

@@ -157,22 +157,53 @@ std::shared_ptr<const Image> read_gobo(const JsonNode& node, const std::filesyst
   return image;
 }
 
+// gobo_up orients a spot's gobo and a beam (DESIGN §1): by default world up,
+// or +z for an axis (nearly) straight up or down.
+void read_gobo_up(JsonObject& o, Light& light) {
+  light.gobo_up = default_gobo_up(light.direction);
+  if (const auto up = o.optional("gobo_up")) {
+    light.gobo_up = up->direction();
+    if (parallel(light.gobo_up, light.direction)) up->fail("must not be parallel to direction");
+  }
+}
+
 void read_spot(JsonObject& o, Light& light, const std::filesystem::path& base_dir) {
   light.position = o.required("position").vec3();
   light.direction = o.required("direction").direction();
   light.intensity = o.required("intensity").color(at_least(0));
   light.cone_deg = o.required("cone_deg").number(left_open(0, 180));
   light.edge_deg = o.number_or("edge_deg", closed(0, light.cone_deg), 0.0f);
-  light.gobo_up = default_gobo_up(light.direction);
-  if (const auto up = o.optional("gobo_up")) {
-    light.gobo_up = up->direction();
-    if (parallel(light.gobo_up, light.direction)) up->fail("must not be parallel to direction");
-  }
+  read_gobo_up(o, light);
   if (const auto gobo = o.optional("gobo")) {
     // The gobo spans tan(cone_deg): it needs a cone narrower than a hemisphere.
     if (!(light.cone_deg < 90.0f)) o.fail("cone_deg", "must be < 90 for a spot with a gobo");
     light.gobo = read_gobo(*gobo, base_dir);
   }
+}
+
+// A directional light's bounded beam (scene.hpp Beam): every member required.
+Beam read_beam(const JsonNode& node) {
+  JsonObject o(node);
+  Beam beam;
+  beam.origin = o.required("origin").vec3();
+  beam.size = o.required("size").vec2(greater_than(0));
+  beam.length = o.required("length").number(greater_than(0));
+  o.finish();
+  return beam;
+}
+
+// A directional light lights all of space, or only its beam; gobo_up orients
+// the beam, and a gobo spans the beam's aperture, so both need a beam.
+void read_directional(JsonObject& o, Light& light, const std::filesystem::path& base_dir) {
+  light.direction = o.required("direction").direction();
+  light.irradiance = o.required("irradiance").color(at_least(0));
+  const auto beam = o.optional("beam");
+  for (const char* key : {"gobo_up", "gobo"})
+    if (!beam && o.has(key)) o.fail(key, "needs a \"beam\": on a directional light it applies to the beam's aperture");
+  if (!beam) return;
+  light.beam = read_beam(*beam);
+  read_gobo_up(o, light);
+  if (const auto gobo = o.optional("gobo")) light.gobo = read_gobo(*gobo, base_dir);
 }
 
 Light read_light(const JsonNode& node, const std::filesystem::path& base_dir) {
@@ -189,11 +220,11 @@ Light read_light(const JsonNode& node, const std::filesystem::path& base_dir) {
     read_spot(o, light, base_dir);
   } else if (name == "directional") {
     light.type = LightType::directional;
-    light.direction = o.required("direction").direction();
-    light.irradiance = o.required("irradiance").color(at_least(0));
+    read_directional(o, light, base_dir);
   } else {
     type.fail("must be \"point\", \"spot\" or \"directional\"");
   }
+  if (light.type != LightType::directional && o.has("beam")) o.fail("beam", "only a directional light has a beam");
   o.finish();
   return light;
 }

@@ -2,6 +2,8 @@
 #include "scene/test_support.hpp"
 
 #include <airlight/scene.hpp>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -182,6 +184,51 @@ TEST(SceneJson, GoboIsReadRelativeToTheSceneFile) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(SceneJson, DirectionalBeamIsReadWithItsFrame) {
+  Json j = valid_scene();
+  j["lights"][2]["beam"] = Json::parse(R"({"origin": [1, 6, -2], "size": [3, 1.5], "length": 12})");
+  const Light sun = parse(j).lights[2];
+  ASSERT_TRUE(sun.beam.has_value());
+  expect_vec(sun.beam->origin, {1, 6, -2});
+  EXPECT_EQ(sun.beam->size, glm::vec2(3.0f, 1.5f));
+  EXPECT_EQ(sun.beam->length, 12.0f);
+  expect_vec(sun.gobo_up, {0, 1, 0});  // world up: the light is not vertical
+  j["lights"][2]["direction"] = {0, -1, 0};
+  expect_vec(parse(j).lights[2].gobo_up, {0, 0, 1});  // vertical: +z, as for a spot
+  j["lights"][2]["gobo_up"] = {3, 0, 4};
+  expect_vec(parse(j).lights[2].gobo_up, {0.6f, 0, 0.8f});
+  j["lights"][2].erase("beam");
+  j["lights"][2].erase("gobo_up");
+  EXPECT_FALSE(parse(j).lights[2].beam.has_value());  // no beam: lit everywhere
+}
+
+// A PNG gobo on a beam, relative to the scene file, decoded from sRGB to linear
+// (IEC 61966-2-1): the bytes 255, 128 (power segment) and 10 (linear segment).
+TEST(SceneJson, PngGoboOnABeamIsDecodedToLinear) {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "airlight_scene_png_gobo";
+  std::filesystem::create_directories(dir);
+  auto linear = [](int byte) {
+    const double c = byte / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  Image image(2, 1);
+  image.at(0, 0) = glm::vec3(linear(255), linear(128), linear(10));  // written back as exactly these bytes
+  image.at(1, 0) = glm::vec3(linear(0), linear(10), linear(128));
+  write_image(image, dir / "window.png");
+  Json j = valid_scene();
+  j["objects"] = Json::array();
+  j["lights"][2]["beam"] = Json::parse(R"({"origin": [0, 6, 0], "size": [2, 1], "length": 10})");
+  j["lights"][2]["gobo"] = "window.png";
+  std::ofstream(dir / "beam.json") << j.dump();
+  const Light sun = load_scene(dir / "beam.json").lights[2];
+  ASSERT_NE(sun.gobo, nullptr);
+  ASSERT_EQ(sun.gobo->width, 2);
+  // 1e-6: float pixels of values <= 1.
+  expect_vec(sun.gobo->at(0, 0), glm::vec3(1.0f, 0.2158605f, 0.0030353f), 1e-6f);
+  expect_vec(sun.gobo->at(1, 0), glm::vec3(0.0f, 0.0030353f, 0.2158605f), 1e-6f);
+  std::filesystem::remove_all(dir);
+}
+
 // ---- bad input: every error names the file and the key ----------------------
 
 // One broken scene: the valid scene with the value at `pointer` replaced by
@@ -349,6 +396,46 @@ const BadCase kObjectsAndLights[] = {
      "lights[1].cone_deg"},
 };
 
+// A beam and the keys that need one, on the valid scene's directional light (lights[2]).
+const BadCase kBeams[] = {
+    {"BeamOnPointLight", "/lights/0/beam", R"({"origin": [0, 5, 0], "size": [1, 1], "length": 5})",
+     "lights[0].beam"},
+    {"BeamOnSpotLight", "/lights/1/beam", R"({"origin": [0, 5, 0], "size": [1, 1], "length": 5})",
+     "lights[1].beam"},
+    {"BeamNotObject", "/lights/2/beam", "[1, 2]", "lights[2].beam"},
+    {"BeamUnknownKey", "/lights/2/beam", R"({"origin": [0, 5, 0], "size": [1, 1], "length": 5, "width": 2})",
+     "lights[2].beam.width"},
+    {"BeamMissingOrigin", "/lights/2/beam", R"({"size": [1, 1], "length": 5})", "lights[2].beam.origin"},
+    {"BeamMissingSize", "/lights/2/beam", R"({"origin": [0, 5, 0], "length": 5})", "lights[2].beam.size"},
+    {"BeamMissingLength", "/lights/2/beam", R"({"origin": [0, 5, 0], "size": [1, 1]})", "lights[2].beam.length"},
+    {"BeamSizeZero", "/lights/2/beam", R"({"origin": [0, 5, 0], "size": [0, 1], "length": 5})",
+     "lights[2].beam.size[0]"},
+    {"BeamSizeNegative", "/lights/2/beam", R"({"origin": [0, 5, 0], "size": [1, -1], "length": 5})",
+     "lights[2].beam.size[1]"},
+    {"BeamSizeThreeNumbers", "/lights/2/beam", R"({"origin": [0, 5, 0], "size": [1, 1, 1], "length": 5})",
+     "lights[2].beam.size"},
+    {"BeamSizeBeyondFloatRange", "/lights/2/beam", R"({"origin": [0, 5, 0], "size": [1e39, 1], "length": 5})",
+     "lights[2].beam.size[0]"},
+    {"BeamLengthZero", "/lights/2/beam", R"({"origin": [0, 5, 0], "size": [1, 1], "length": 0})",
+     "lights[2].beam.length"},
+    {"BeamLengthNegative", "/lights/2/beam", R"({"origin": [0, 5, 0], "size": [1, 1], "length": -3})",
+     "lights[2].beam.length"},
+    {"BeamLengthBeyondFloatRange", "/lights/2/beam", R"({"origin": [0, 5, 0], "size": [1, 1], "length": 1e39})",
+     "lights[2].beam.length"},
+    {"BeamOriginString", "/lights/2/beam", R"({"origin": "here", "size": [1, 1], "length": 5})",
+     "lights[2].beam.origin"},
+    {"GoboOnDirectionalWithoutBeam", "/lights/2/gobo", R"("missing.png")", "lights[2].gobo"},
+    {"GoboUpOnDirectionalWithoutBeam", "/lights/2/gobo_up", "[0, 0, 1]", "lights[2].gobo_up"},
+    {"BeamGoboUpAlongDirection", "/lights/2",
+     R"({"type": "directional", "direction": [0, -1, 0], "irradiance": 1, "gobo_up": [0, 2, 0],
+         "beam": {"origin": [0, 5, 0], "size": [1, 1], "length": 5}})",
+     "lights[2].gobo_up"},
+    {"BeamGoboMissingFile", "/lights/2",
+     R"({"type": "directional", "direction": [0, -1, 0], "irradiance": 1, "gobo": "missing.png",
+         "beam": {"origin": [0, 5, 0], "size": [1, 1], "length": 5}})",
+     "lights[2].gobo"},
+};
+
 std::string case_name(const ::testing::TestParamInfo<BadCase>& info) { return info.param.name; }
 
 INSTANTIATE_TEST_SUITE_P(Format, BadScene, ::testing::ValuesIn(kFormat), case_name);
@@ -359,6 +446,7 @@ INSTANTIATE_TEST_SUITE_P(OutOfRange, BadScene, ::testing::ValuesIn(kOutOfRange),
 INSTANTIATE_TEST_SUITE_P(ZeroVector, BadScene, ::testing::ValuesIn(kZeroVectors), case_name);
 INSTANTIATE_TEST_SUITE_P(ObjectOrLight, BadScene, ::testing::ValuesIn(kObjectsAndLights),
                          case_name);
+INSTANTIATE_TEST_SUITE_P(Beam, BadScene, ::testing::ValuesIn(kBeams), case_name);
 
 // ---- bad input the table cannot express ------------------------------------
 

@@ -1,0 +1,12 @@
+// in: (origin, length), (axis, width), (right, height), (up, -), (x, -)
+// → out: (beam_uv(x), beam_depth(x), inside_beam(x))
+#define IN_STRIDE 5
+#define OUT_STRIDE 1
+#include "gpu/twin_shaders/twin_io.glsl"
+#include "optics/light.glsl"
+void evaluate(uint i) {
+  vec4 origin = arg(i, 0), axis = arg(i, 1), right = arg(i, 2);
+  Beam b = Beam(origin.xyz, axis.xyz, right.xyz, arg(i, 3).xyz, vec2(axis.w, right.w), origin.w);
+  vec3 x = arg(i, 4).xyz;
+  result(i, 0, vec4(beam_uv(b, x), beam_depth(b, x), inside_beam(b, x) ? 1.0 : 0.0));
+}

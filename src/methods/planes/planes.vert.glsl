@@ -1,0 +1,45 @@
+// Dobashi 2000 §5.1: one virtual plane parallel to the image plane per
+// instance, as an n×n lattice mesh over the whole screen. Plane k stands for
+// the slab [k·dz, (k+1)·dz] of view depth; it is rasterized at the slab's near
+// face, so that the depth test against the scene keeps exactly the slabs that
+// begin in front of the visible surface (the fragment shader weighs the part
+// in front of it). Clip distances bound it to the light's influence volume:
+// the hardware clips the mesh, and fragments outside are never shaded.
+//
+// With `lattice_xi`, ξ (Dobashi eq. 6: σs·p·exp(−τ)/r² per unit depth, here
+// through the shared inscatter without the light map) is evaluated at the
+// lattice's vertices at the slab's middle and interpolated across each cell,
+// as Gouraud shading did in the paper.
+#include "methods/planes/view_ray.glsl"
+
+uniform int light;        // index into lights[]
+uniform int lattice;      // cells per side of the mesh
+uniform bool lattice_xi;  // ξ per vertex (else per fragment: `xi` unused)
+uniform float dz;         // slab thickness in view depth
+uniform vec4 clip_planes[8];  // world half-spaces dot(xyz, x) + w >= 0
+uniform int clip_count;
+uniform float clip_margin;    // how far a fragment's sample may lie from the slab's middle
+
+out gl_PerVertex {
+  vec4 gl_Position;
+  float gl_ClipDistance[8];
+};
+flat out int plane;
+out vec3 xi;
+
+void main() {
+  ivec2 corner = ivec2(gl_VertexID % (lattice + 1), gl_VertexID / (lattice + 1));
+  vec3 ray = view_ray(2.0 * vec2(corner) / float(lattice) - 1.0);
+  plane = gl_InstanceID;
+  vec3 eye = frame_eye.xyz;
+  // The near face, moved just past the near plane for the first slab (the
+  // depth test needs a depth; no surface lies nearer than the near plane).
+  float near_face = max(float(plane) * dz, frame_clip.x * 1.0001);
+  gl_Position = frame_view_projection * vec4(eye + near_face * ray, 1.0);
+  vec3 x = eye + (float(plane) + 0.5) * dz * ray;
+  for (int c = 0; c < 8; ++c)
+    gl_ClipDistance[c] = c < clip_count ? dot(clip_planes[c].xyz, x) + clip_planes[c].w + clip_margin : 1.0;
+  // Per unit view depth: a step dz in depth is dz·|ray| = dz/cos along the ray
+  // (Nilsson ch. 3, footnote 1).
+  xi = lattice_xi ? inscatter_unmapped(light, x, normalize(ray), eye_leg_depth(eye, x)) * length(ray) : vec3(0.0);
+}
