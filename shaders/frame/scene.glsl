@@ -202,6 +202,19 @@ Arrival light_arrival(int i, vec3 x) {
   return a;
 }
 
+// The part of [t0, t1] along eye + t·dir (unit) where light i can arrive: for
+// a spot the hull of its cone's pieces (cone_intervals: the cone itself below
+// 90°, where it is convex; a wider cone's lit set may be two pieces around the
+// dark backward cone, and the gap between them has a cone factor of 0); for a
+// beam its box (beam_interval); else all of it. Empty: !(x < y).
+vec2 lit_interval(int i, vec3 eye, vec3 dir, float t0, float t1) {
+  if (has_beam(i)) return beam_interval(light_beam(i), eye, dir, t0, t1);
+  if (lights[i].meta.x != LIGHT_SPOT) return vec2(t0, t1);
+  ConeIntervals lit = cone_intervals(lights[i].position.xyz, lights[i].direction.xyz, lights[i].position.w,
+                                     eye, dir, t0, t1);
+  return lit.count > 0 ? vec2(lit.piece[0].x, lit.piece[lit.count - 1].y) : vec2(t1, t0);
+}
+
 // ---- shadow maps (Tóth §4: 2D for spots, cubes for point lights) ---------------
 
 // What a shadow map stores (R32F, linear): the distance from a point light or

@@ -3,6 +3,7 @@
 // light model (DESIGN §1).
 // Tested against the C++ by src/gpu/optics_twin_test.cpp.
 #include "optics/numerics.glsl"
+#include "optics/media.glsl"
 
 // Light model codes: the integer values of airlight::LightModelType.
 const int LIGHT_MODEL_PHYSICAL = 0;
@@ -141,6 +142,17 @@ bool inside_beam(Beam b, vec3 x) {
   vec2 uv = beam_uv(b, x);
   float s = beam_depth(b, x);
   return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))) && s >= 0.0 && s <= b.length;
+}
+
+// optics::beam_interval: the part of [t0, t1] of origin + t·dir inside the
+// beam's box, by slabs in the beam's frame (box_overlap, media.glsl); empty
+// when !(x < y).
+vec2 beam_interval(Beam b, vec3 origin, vec3 dir, float t0, float t1) {
+  vec3 o = origin - b.origin;
+  vec3 p = vec3(dot(o, b.right), dot(o, b.up), dot(o, b.axis));
+  vec3 d = vec3(dot(dir, b.right), dot(dir, b.up), dot(dir, b.axis));
+  vec3 half_size = vec3(0.5 * b.size, 0.0);
+  return box_overlap(p, d, t0, t1, -half_size, half_size + vec3(0.0, 0.0, b.length));
 }
 
 // The distance falloff of optics::arrival for point and spot lights:

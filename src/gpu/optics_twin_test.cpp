@@ -230,6 +230,29 @@ TEST(OpticsTwin, GoboCoordinatesAndSamplesAcrossTheSquare) {
 // beam_uv, beam_depth and inside_beam of random beams at points around them.
 // Half of the beams are axis-aligned with points on a 1/8 grid (exact in
 // float), so that points on a face are on it for both sides: the box is closed.
+// The GPU's beam_interval of the ray x + t·ray.xyz, t in [0, ray.w], against
+// optics::beam_interval: the length inside the box, whose ends move by the
+// position's rounding over the ray's slope against each face (a ray grazing a
+// face within 1/20 rad is checked for finiteness only: there the ends are
+// ill-conditioned in any precision).
+template <typename Describe>
+void check_beam_interval(const Light& light, const glm::dvec3& x, const glm::vec4& ray, const glm::vec4& gpu,
+                         double position, Errors& errors, Describe&& where) {
+  const glm::dvec3 dir = glm::normalize(glm::dvec3(ray));
+  const optics::Interval cpu = optics::beam_interval(light, x, dir, 0.0, ray.w);
+  glm::dvec3 right, up;
+  optics::gobo_frame(light, right, up);
+  const double slope = std::min({std::abs(glm::dot(dir, right)), std::abs(glm::dot(dir, up)),
+                                 std::abs(glm::dot(dir, glm::dvec3(light.direction)))});
+  const double length = cpu.empty() ? 0.0 : cpu.hi - cpu.lo;
+  const double gpu_length = gpu.x < gpu.y ? double(gpu.y) - gpu.x : 0.0;
+  if (slope < 0.05) {
+    errors.finite(gpu_length, where);
+    return;
+  }
+  errors.check(gpu_length, length, 4.0 * position / slope + 1e-6 * ray.w, where);
+}
+
 TEST(OpticsTwin, BeamCoordinatesAndInside) {
   std::mt19937 rng(6);
   std::vector<Light> lights;
@@ -259,26 +282,30 @@ TEST(OpticsTwin, BeamCoordinatesAndInside) {
       in.emplace_back(glm::vec3(right), b.size.y);
       in.emplace_back(glm::vec3(up), 0.0f);
       in.emplace_back(x, 0.0f);
+      in.emplace_back(random_unit(rng), uniform(rng, 0.1f, 20.0f));  // a ray from x, to t1
       lights.push_back(light);
     }
   }
-  const auto out = run_twin("beam.comp.glsl", in, 5, 1);
+  const auto out = run_twin("beam.comp.glsl", in, 6, 2);
 
   Errors uv_errors("beam_uv", false), depth_errors("beam_depth", false), inside_errors("inside_beam", false);
+  Errors interval_errors("beam_interval", false);
   int boundary = 0;
   for (size_t i = 0; i < lights.size(); ++i) {
     const Light& light = lights[i];
     const Beam& b = *light.beam;
-    const glm::dvec3 x(in[5 * i + 4]);
-    auto where = [&] { return "beam origin " + str(b.origin) + " x " + str(in[5 * i + 4]); };
+    const glm::dvec3 x(in[6 * i + 4]);
+    auto where = [&] { return "beam origin " + str(b.origin) + " x " + str(in[6 * i + 4]); };
     // x − origin in float (~ε·(|x| + |origin|)) projected on the float frame
     // (~ε of each axis): 8ε·(|x| + |origin|) in position, over w or h in uv.
     const double position = 8 * 6e-8 * (glm::length(x) + glm::length(glm::dvec3(b.origin))) + 1e-7;
     const glm::dvec2 uv = optics::beam_uv(light, x);
     const double s = optics::beam_depth(light, x);
-    uv_errors.check(out[i].x, uv.x, position / b.size.x, where);
-    uv_errors.check(out[i].y, uv.y, position / b.size.y, where);
-    depth_errors.check(out[i].z, s, position, where);
+    const glm::vec4 uvs = out[2 * i], interval = out[2 * i + 1];
+    uv_errors.check(uvs.x, uv.x, position / b.size.x, where);
+    uv_errors.check(uvs.y, uv.y, position / b.size.y, where);
+    depth_errors.check(uvs.z, s, position, where);
+    check_beam_interval(light, x, in[6 * i + 5], interval, position, interval_errors, where);
     // Within rounding of a face the verdicts may differ (not on the aligned grid: exact there).
     const double margin = std::min({std::abs(uv.x), std::abs(1 - uv.x), std::abs(uv.y), std::abs(1 - uv.y)});
     const double across = margin * std::min(b.size.x, b.size.y), along = std::min(std::abs(s), std::abs(s - b.length));
@@ -286,9 +313,9 @@ TEST(OpticsTwin, BeamCoordinatesAndInside) {
     const bool exact = i / 200 % 2 == 0;
     if (near_face && !exact) {
       ++boundary;
-      inside_errors.finite(out[i].w, where);
+      inside_errors.finite(uvs.w, where);
     } else {
-      inside_errors.check(out[i].w, optics::inside_beam(light, x) ? 1.0 : 0.0, 0.0, where);
+      inside_errors.check(uvs.w, optics::inside_beam(light, x) ? 1.0 : 0.0, 0.0, where);
     }
   }
   std::printf("inside_beam: %d cases within rounding of a face left out\n", boundary);

@@ -1,7 +1,7 @@
-// in: (origin, length), (axis, width), (right, height), (up, -), (x, -)
-// → out: (beam_uv(x), beam_depth(x), inside_beam(x))
-#define IN_STRIDE 5
-#define OUT_STRIDE 1
+// in: (origin, length), (axis, width), (right, height), (up, -), (x, -), (dir, t1)
+// → out: (beam_uv(x), beam_depth(x), inside_beam(x)), (beam_interval(x, dir, 0, t1), -, -)
+#define IN_STRIDE 6
+#define OUT_STRIDE 2
 #include "gpu/twin_shaders/twin_io.glsl"
 #include "optics/light.glsl"
 void evaluate(uint i) {
@@ -9,4 +9,6 @@ void evaluate(uint i) {
   Beam b = Beam(origin.xyz, axis.xyz, right.xyz, arg(i, 3).xyz, vec2(axis.w, right.w), origin.w);
   vec3 x = arg(i, 4).xyz;
   result(i, 0, vec4(beam_uv(b, x), beam_depth(b, x), inside_beam(b, x) ? 1.0 : 0.0));
+  vec4 ray = arg(i, 5);
+  result(i, 1, vec4(beam_interval(b, x, ray.xyz, 0.0, ray.w), 0.0, 0.0));
 }

@@ -44,13 +44,19 @@ std::vector<SettingSpec> plane_settings() {
           {"jitter", T::choice, 0, 0, 0, {"none", "white", "blue"},
            "per-pixel offset of the samples within their slabs (Dobashi §7): none = the middle; white or blue "
            "noise turn the planes' banding into noise"},
+          {"sampling", T::choice, 0, 0, 0, {"lit", "plane"},
+           "plane = Dobashi's: one sample per plane at the middle of its slab's part in front of the surface, "
+           "weighted by Δt; lit = the slab's piece cut to the light's lit interval (a spot's cone, a beam's box), "
+           "sampled evenly in the angle seen from a point or spot light with the falloff integrated exactly, and "
+           "with more samples where the piece sweeps a gobo or passes beside the light (lattice: ξ stays sampled)"},
           {"clip", T::boolean, 1, 0, 1, {},
            "clip the planes to the light's influence volume (a pyramid around a spot's cone, a beam's box), so "
            "fragments outside it are never shaded (Nilsson 3.1)"}};
 }
 
 PlaneSettings PlaneSettings::from(const Settings& s) {
-  return {s.integer("planes"), s.real("spacing"), s.integer("lattice"), s.choice("jitter"), s.boolean("clip")};
+  return {s.integer("planes"), s.real("spacing"), s.integer("lattice"), s.choice("jitter"),
+          s.choice("sampling") == "lit", s.boolean("clip")};
 }
 
 void PlanePass::prepare(const Scene& scene) {
@@ -129,6 +135,7 @@ void PlanePass::draw_light(int light, const LightVolume& volume) {
   gpu::set_uniform(program_, "lattice_xi", settings_.lattice > 0 ? 1 : 0);
   gpu::set_uniform(program_, "dz", s.dz);
   gpu::set_uniform(program_, "jitter", settings_.jitter != "none" ? 1 : 0);
+  gpu::set_uniform(program_, "lit_sampling", settings_.lit_sampling ? 1 : 0);
   gpu::set_uniform(program_, "clip_planes", clip);
   gpu::set_uniform(program_, "clip_count", static_cast<int>(clip.size()));
   // A sample lies anywhere in its slab, up to dz/2 in depth, i.e. dz/(2 cos)

@@ -21,6 +21,7 @@ struct PlaneSettings {
   double spacing = 0.0;          // dz in metres of view depth; 0: from n
   int lattice = 0;               // cells per side of the lattice mesh; 0: ξ per fragment
   std::string jitter = "none";   // none | white | blue
+  bool lit_sampling = true;      // sample each slab's lit piece, else the slab (Dobashi)
   bool clip = true;              // clip planes to the influence volume
 
   static PlaneSettings from(const Settings& settings);

@@ -4,9 +4,10 @@
 // buffer). I(θ,φ) is the light map (light_map: spot cone and gobo, or the
 // beam and its gobo), V the shadow-map test (Dobashi §5.2 in its modern form).
 //
-// The slab [k·dz, (k+1)·dz] is cut at the visible surface: only its part in
-// front counts, sampled at its middle (or at the pixel's jitter offset), so a
-// surface inside a slab gets no step of up to dz in its fog.
+// The slab [k·dz, (k+1)·dz] is cut at the visible surface and to the light's
+// lit interval: only that part counts, sampled at its middle (or at the
+// pixel's jitter offset), so a surface inside a slab gets no step of up to dz
+// in its fog and a shaft's edge no step across it.
 #include "methods/planes/view_ray.glsl"
 
 layout(binding = BINDING_JITTER) uniform sampler2D jitter_offsets;  // R32F tile of values in [0, 1)
@@ -15,6 +16,67 @@ uniform int light;
 uniform bool lattice_xi;
 uniform float dz;
 uniform bool jitter;  // per-pixel offset of the samples within their slabs (Dobashi §7's jittering)
+uniform bool lit_sampling;  // sample the slab's lit piece (else the slab, as Dobashi)
+
+// A piece [ta, tb] of the ray eye + t·dir in the equiangular substitution of
+// Kulla & Fajardo 2012, for the falloff f = 1/(a1 r² + a0) of a point or spot
+// light (1/r² physical: a0 = 0, a1 = 1): with h the light's distance from the
+// ray's line, s = t − foot, c = a0/a1 and h'² = h² + c, θ = atan(s/h') runs
+// over [θa, θb] and ∫ f dt = Δθ/(a1 h'). Samples even in θ sit at even angles
+// as seen from the light, where the cone's edge and the gobo change, and
+// weigh ∫ f dt / f(r) each, exact for the falloff's peak of a piece passing
+// within a slab's thickness of the light, which a sample at the middle of Δt
+// misses. A constant falloff (a1 = 0) or no falloff (directional) keeps even
+// steps in t (h = 0).
+struct Piece {
+  vec2 t;     // [ta, tb]
+  float foot, h, c;
+  vec2 theta;  // [θa, θb]
+};
+
+Piece even_piece(vec2 t) { return Piece(t, 0.0, 0.0, 0.0, vec2(0.0)); }
+
+Piece angular_piece(vec3 light, vec3 eye, vec3 dir, vec2 t) {
+  float a0 = simplified_model() ? light_model_coeffs.x : 0.0;
+  float a1 = simplified_model() ? light_model_coeffs.y : 1.0;
+  if (!(a1 > 0.0)) return even_piece(t);
+  vec3 delta = light - eye;
+  float foot = dot(delta, dir);
+  vec3 side = delta - foot * dir;
+  float c = a0 / a1;
+  float h = max(sqrt(dot(side, side) + c), MIN_LIGHT_DISTANCE);
+  return Piece(t, foot, h, c, vec2(atan2_accurate(t.x - foot, h), atan2_accurate(t.y - foot, h)));
+}
+
+// Samples for a piece of light i's lit interval: one per MAX_SAMPLE_ANGLE of
+// Δθ for an angular piece (a spot's gobo dots span a few degrees), one per
+// gobo texel the piece crosses in a beam, else one; at most MAX_PIECE_SAMPLES.
+// Only a piece passing within about a slab's thickness of a light, or
+// crossing a patterned beam obliquely, needs more than one: the extra samples
+// cost nothing elsewhere.
+const float MAX_SAMPLE_ANGLE = PI / 256.0;
+const int MAX_PIECE_SAMPLES = 64;
+int piece_samples(int i, Piece p, vec3 dir) {
+  float n = 1.0;
+  if (p.h > 0.0) n = (p.theta.y - p.theta.x) / MAX_SAMPLE_ANGLE;
+  else if (has_beam(i) && lights[i].meta.w >= 0) {
+    Beam b = light_beam(i);
+    vec2 texels = vec2(textureSize(gobo_maps, 0).xy) / b.size;  // per metre across the beam
+    vec2 across = abs(vec2(dot(dir, b.right), dot(dir, b.up))) * (p.t.y - p.t.x);
+    n = max(across.x * texels.x, across.y * texels.y);
+  }
+  return clamp(int(ceil(n)), 1, MAX_PIECE_SAMPLES);
+}
+
+// Sample u ∈ (0, 1) of n: where (x: t) and its weight (y: ∫ f dt / f(r) over
+// its 1/n of the piece, or Δt/n for an even piece).
+vec2 piece_sample(Piece p, vec3 light, vec3 eye, vec3 dir, float u, int n) {
+  if (p.h == 0.0) return vec2(mix(p.t.x, p.t.y, u), (p.t.y - p.t.x) / float(n));
+  float t = clamp(p.foot + p.h * tan(mix(p.theta.x, p.theta.y, u)), p.t.x, p.t.y);
+  vec3 r = eye + t * dir - light;
+  float r2 = max(dot(r, r) + p.c, MIN_LIGHT_DISTANCE * MIN_LIGHT_DISTANCE);
+  return vec2(t, (p.theta.y - p.theta.x) / float(n) / p.h * r2);
+}
 
 flat in int plane;
 in vec3 xi;
@@ -26,15 +88,29 @@ void main() {
   float cos_axis = dot(dir, frame_forward.xyz);
   float z0 = float(plane) * dz;
   float z1 = min(z0 + dz, surface_distance(pixel) * cos_axis);
-  if (!(z1 > z0)) discard;  // the depth test's rounding let a slab behind the surface through
-  float offset = jitter ? texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r : 0.5;
   vec3 eye = frame_eye.xyz;
-  vec3 x = eye + mix(z0, z1, offset) / cos_axis * dir;
-  vec3 map = light_map(light, x);
-  if (map == vec3(0.0)) discard;
-  float visible = shadow_visibility(light, x);
-  if (visible == 0.0) discard;
-  vec3 scatter = lattice_xi ? xi * (z1 - z0)
-                            : inscatter_unmapped(light, x, dir, eye_leg_depth(eye, x)) * ((z1 - z0) / cos_axis);
-  airlight = vec4(map * visible * scatter, 0.0);
+  // The slab's piece of the ray in front of the surface, cut to where the
+  // light can arrive (a spot's cone, a beam's box): the sample never falls
+  // outside a shaft that crosses the slab, so shafts keep their edges and thin
+  // pieces (a ray grazing a spot's apex) their light.
+  vec2 lit = lit_sampling ? lit_interval(light, eye, dir, z0 / cos_axis, z1 / cos_axis) : vec2(z0, z1) / cos_axis;
+  if (!(lit.y > lit.x)) discard;
+  float offset = jitter ? texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r : 0.5;
+  vec3 light_position = lights[light].position.xyz;
+  bool by_angle = lit_sampling && !lattice_xi && lights[light].meta.x != LIGHT_DIRECTIONAL;
+  Piece p = by_angle ? angular_piece(light_position, eye, dir, lit) : even_piece(lit);
+  int n = lit_sampling ? piece_samples(light, p, dir) : 1;
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < n; ++k) {
+    vec2 s = piece_sample(p, light_position, eye, dir, (float(k) + offset) / float(n), n);
+    vec3 x = eye + s.x * dir;
+    vec3 map = light_map(light, x);
+    if (map == vec3(0.0) || shadow_visibility(light, x) == 0.0) continue;
+    // ξ per unit length along the ray (the lattice's is per unit depth) times
+    // the sample's weight: Δt, or ∫ f dt / f(r), trading ξ's falloff for its integral.
+    vec3 xi_here = lattice_xi ? xi * cos_axis : inscatter_unmapped(light, x, dir, eye_leg_depth(eye, x));
+    sum += map * xi_here * s.y;
+  }
+  if (sum == vec3(0.0)) discard;
+  airlight = vec4(sum, 0.0);
 }

@@ -64,32 +64,20 @@ vec2 segment_sample(Segment s, float u, int n) {
   return vec2(s.foot + y, (s.theta_b - s.theta_a) / float(n) * (s.h + y * y / s.h));  // h/cos²θ = h + y²/h
 }
 
-// ---- the spot's cone ----------------------------------------------------------
-
-// The part of [0, d] along eye + t·dir that light i reaches: for a spot, the
-// hull of its cone's pieces (optics/light.glsl cone_intervals): the cone itself
-// below 90°, where it is convex; a wider cone's lit set may be two pieces
-// around the dark backward cone, and samples in the gap between them get a
-// cone factor of 0. Empty: x > y.
-vec2 lit_interval(int i, vec3 eye, vec3 dir, float d) {
-  if (lights[i].meta.x != LIGHT_SPOT) return vec2(0.0, d);
-  ConeIntervals lit = cone_intervals(lights[i].position.xyz, lights[i].direction.xyz, lights[i].position.w,
-                                     eye, dir, 0.0, d);
-  return lit.count > 0 ? vec2(lit.piece[0].x, lit.piece[lit.count - 1].y) : vec2(d, 0.0);
-}
-
 // ---- marching -----------------------------------------------------------------
 
-const int ALL_LIGHTS = -1;          // `group` of march_segment: every light,
-const int DIRECTIONAL_LIGHTS = -2;  // the directional ones, or one light (>= 0)
+const int ALL_LIGHTS = -1;      // `group` of march_segment: every light,
+const int UNBOUNDED_SUNS = -2;  // the directional lights without a beam, or one light (>= 0)
+
+bool unbounded_sun(int i) { return lights[i].meta.x == LIGHT_DIRECTIONAL && !has_beam(i); }
 
 bool in_group(int i, int group) {
-  return group == ALL_LIGHTS || (group == DIRECTIONAL_LIGHTS ? lights[i].meta.x == LIGHT_DIRECTIONAL : i == group);
+  return group == ALL_LIGHTS || (group == UNBOUNDED_SUNS ? unbounded_sun(i) : i == group);
 }
 
-bool any_directional_light() {
+bool any_unbounded_sun() {
   for (int i = 0; i < light_count(); ++i)
-    if (lights[i].meta.x == LIGHT_DIRECTIONAL) return true;
+    if (unbounded_sun(i)) return true;
   return false;
 }
 
@@ -118,17 +106,20 @@ vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) 
 
 // L_air along the unit view ray `dir` up to distance d, over the range's samples.
 // Equiangular: one march per point or spot light over the part of [0, d] it
-// lights, and one uniform march for the directional lights.
+// lights, one uniform march per beam over its box, and one uniform march for
+// the directional lights without a beam.
 vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset, int sampling) {
   if (sampling == SAMPLING_UNIFORM) return march_segment(dir, uniform_segment(0.0, d), r, offset, ALL_LIGHTS);
   vec3 sum = vec3(0.0);
-  if (any_directional_light()) sum += march_segment(dir, uniform_segment(0.0, d), r, offset, DIRECTIONAL_LIGHTS);
+  if (any_unbounded_sun()) sum += march_segment(dir, uniform_segment(0.0, d), r, offset, UNBOUNDED_SUNS);
   vec3 eye = frame_eye.xyz;
   for (int i = 0; i < light_count(); ++i) {
-    if (lights[i].meta.x == LIGHT_DIRECTIONAL) continue;
-    vec2 lit = lit_interval(i, eye, dir, d);
-    if (lit.y > lit.x)
-      sum += march_segment(dir, equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position.xyz), r, offset, i);
+    if (unbounded_sun(i)) continue;
+    vec2 lit = lit_interval(i, eye, dir, 0.0, d);
+    if (!(lit.y > lit.x)) continue;
+    Segment s = has_beam(i) ? uniform_segment(lit.x, lit.y)
+                            : equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position.xyz);
+    sum += march_segment(dir, s, r, offset, i);
   }
   return sum;
 }
@@ -137,19 +128,19 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset, int sampling
 
 // Per channel, Σ over point and spot lights of I·∫dx/r² over the part of [0, d]
 // each lights (Δθ/h: exact, as in equiangular_segment), plus Σ over directional
-// lights of E·d: L_air without σs·p, V, gobo, smooth edge and extinction. It
+// lights of E times the length of [0, d] they light: L_air without σs·p, V, gobo, smooth edge and extinction. It
 // carries what changes fastest from pixel to pixel — the 1/h peak next to a
 // light, a cone's edge, the length of the ray — and is 0 where no light reaches.
 vec3 light_guide(vec3 dir, float d) {
   vec3 eye = frame_eye.xyz;
   vec3 guide = vec3(0.0);
   for (int i = 0; i < light_count(); ++i) {
+    vec2 lit = lit_interval(i, eye, dir, 0.0, d);
+    if (!(lit.y > lit.x)) continue;
     if (lights[i].meta.x == LIGHT_DIRECTIONAL) {
-      guide += lights[i].color.rgb * d;
+      guide += lights[i].color.rgb * (lit.y - lit.x);
       continue;
     }
-    vec2 lit = lit_interval(i, eye, dir, d);
-    if (!(lit.y > lit.x)) continue;
     Segment s = equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position.xyz);
     guide += lights[i].color.rgb * ((s.theta_b - s.theta_a) / s.h);
   }
