@@ -1,4 +1,5 @@
 // Every method registers here with one line (DESIGN §3).
+#include "methods/analytic/analytic_method.hpp"
 #include "methods/interleaved/interleaved_method.hpp"
 #include "methods/planes/planes_method.hpp"
 #include "methods/raymarch/raymarch_method.hpp"
@@ -15,6 +16,7 @@ const std::vector<MethodInfo>& registered_methods() {
       methods::raymarch_method(),
       methods::interleaved_method(),
       methods::planes_method(),
+      methods::analytic_method(),
   };
   return all;
 }

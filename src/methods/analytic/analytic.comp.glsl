@@ -1,0 +1,20 @@
+// analytic (Kingston 4.2.3, Sun et al. 2005): per pixel, L_air = Σ_lights
+// Γ_i(0 → d), the unoccluded closed-form airlight of each light along the view
+// ray from the eye to the G-buffer distance d (the visible surface or the far
+// plane). No samples along the ray, hence no shadow-map lookups: the method has
+// no volumetric shadows (Kingston §5.2.3). With SUN_F_TABLE, Γ reads Sun et
+// al.'s F(u, v) from the table at BINDING_SUN_TABLE instead of integrating it.
+#include "frame/closed_form.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) writeonly uniform image2D airlight_out;
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, frame_size()))) return;
+  vec3 dir = pixel_ray(vec2(pixel) + 0.5);
+  float d = surface_distance(pixel);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < light_count(); ++i) sum += closed_form_airlight(i, frame_eye.xyz, dir, 0.0, d);
+  imageStore(airlight_out, pixel, vec4(sum, 1.0));
+}

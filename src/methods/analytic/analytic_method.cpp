@@ -1,0 +1,83 @@
+#include "methods/analytic/analytic_method.hpp"
+
+#include "gpu/gpu_method.hpp"
+#include "gpu/program.hpp"
+#include "optics/gamma.hpp"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace airlight::methods {
+namespace {
+
+constexpr GLuint sun_table_unit = gpu::binding::first_free_texture;  // BINDING_SUN_TABLE
+
+std::vector<SettingSpec> analytic_settings() {
+  using T = SettingSpec::Type;
+  return {{"F", T::choice, 0, 0, 0, {"table", "shader"},
+           "how Sun et al.'s F(u, v) = ∫_0^v exp(−u tan ξ) dξ is evaluated where Γ uses it (isotropic medium, "
+           "physical light model, point lights and hard-edged spots; Kingston §5.2.1): table = bilinear in a "
+           "precomputed R32F texture (optics::SunTable, Kingston's choice), shader = Gauss–Legendre in the "
+           "shader. Other phase functions, smooth cone edges and the simplified model are integrated in the "
+           "angle either way"}};
+}
+
+// One dispatch over the pixels: every pixel sums Γ of every light to its
+// G-buffer distance (analytic.comp.glsl).
+class Analytic final : public gpu::GpuMethod {
+public:
+  explicit Analytic(const Settings& s) : GpuMethod(s), table_(s.choice("F") == "table") {}
+
+private:
+  void prepare_airlight(const Scene&) override {
+    std::string defines = gpu::frame_defines() + "#define BINDING_SUN_TABLE " + std::to_string(sun_table_unit) + "\n";
+    if (table_) {
+      defines += "#define SUN_F_TABLE\n";
+      upload_table();
+    }
+    program_ = gpu::make_compute_program("methods/analytic/analytic.comp.glsl", defines);
+  }
+
+  // Sun et al.'s F(u, v) as an R32F texture (Kingston 4.2.3); it depends on no
+  // scene, so it is computed once per process. One level, nearest: the shader
+  // filters bilinearly from texelFetch reads (optics::SunTable), so no
+  // derivative picks a mip level or filter at a depth edge.
+  void upload_table() {
+    static const optics::SunTable table = optics::build_sun_table();
+    table_texture_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32F, table.width, table.height);
+    glTextureSubImage2D(table_texture_.id(), 0, 0, 0, table.width, table.height, GL_RED, GL_FLOAT,
+                        table.texels.data());
+  }
+
+  void render_airlight(const gpu::SharedFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
+    gpu::ScopedPass pass(timer, "airlight");
+    glUseProgram(program_.id());
+    if (table_) glBindTextureUnit(sun_table_unit, table_texture_.id());
+    glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gpu::dispatch_pixels(frame.width(), frame.height());
+    closed_forms_ = static_cast<double>(frame.width()) * frame.height() * frame.light_count();
+  }
+
+  std::vector<std::pair<std::string, double>> stats() const override { return {{"closed_forms", closed_forms_}}; }
+
+  bool table_;
+  gpu::Program program_;
+  gpu::Texture table_texture_;
+  double closed_forms_ = 0.0;
+};
+
+}  // namespace
+
+MethodInfo analytic_method() {
+  return {"analytic", "Sun et al. 2005 via Kingston 4.2",
+          "per pixel, the closed-form unoccluded airlight of every light from the eye to the G-buffer distance "
+          "(Sun et al. 2005, Kingston eqs. 36-40; other phase functions in the angle, the simplified model by "
+          "Nilsson eq. 2.17), with F(u, v) from a table or integrated in the shader; no volumetric shadows "
+          "(occluders only end the view ray), and the medium that fills space only: bounded volumes and gobo "
+          "colours are ignored",
+          gpu::gpu_settings(analytic_settings()), [](const Settings& s) { return std::make_unique<Analytic>(s); }};
+}
+
+}  // namespace airlight::methods
