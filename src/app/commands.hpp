@@ -11,5 +11,7 @@ using Run = std::function<void()>;
 // Adds the subcommand to `cli`; the returned function runs it once parsed.
 Run add_render_command(CLI::App& cli);
 Run add_list_command(CLI::App& cli);
+Run add_compare_command(CLI::App& cli);
+Run add_bench_command(CLI::App& cli);
 
 }  // namespace airlight::app

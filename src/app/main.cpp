@@ -14,6 +14,8 @@ int run(int argc, char** argv) {
   const std::map<std::string, airlight::app::Run> commands{
       {"render", airlight::app::add_render_command(cli)},
       {"list", airlight::app::add_list_command(cli)},
+      {"compare", airlight::app::add_compare_command(cli)},
+      {"bench", airlight::app::add_bench_command(cli)},
   };
   try {
     cli.parse(argc, argv);

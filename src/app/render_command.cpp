@@ -1,4 +1,6 @@
 #include "app/commands.hpp"
+#include "app/measure.hpp"
+#include "app/method_settings.hpp"
 #include "app/scene_source.hpp"
 #include "core/image_io.hpp"
 
@@ -7,7 +9,6 @@
 
 #include <nlohmann/json.hpp>
 #include <oneapi/tbb/global_control.h>
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
@@ -27,29 +28,10 @@ struct RenderOptions {
   int threads = 0;  // 0: all cores
 };
 
-// "--set key=value" or "--set method.key=value" (the form bench sweeps use).
-Settings method_settings(const MethodInfo& method, const std::vector<std::string>& assignments) {
-  Settings settings(method.settings);
-  for (std::string a : assignments) {
-    const auto dot = a.find('.'), eq = a.find('=');
-    if (dot != std::string::npos && dot < eq) {
-      if (a.substr(0, dot) != method.name)
-        throw InputError("--set", a.substr(0, eq), "the setting names another method than '" + method.name + "'");
-      a = a.substr(dot + 1);
-    }
-    settings.set(a, "--set");
-  }
-  return settings;
-}
-
 Pass parse_pass(const std::string& name) {
   if (name == "airlight") return Pass::airlight;
   if (name == "surface") return Pass::surface;
   return Pass::composite;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // Min, mean and max per channel; a non-finite pixel is a method's bug and fails the render.
@@ -68,12 +50,6 @@ nlohmann::json image_stats(const Image& image, const std::string& method) {
   const glm::dvec3 mean = sum / static_cast<double>(image.pixels.size());
   auto rgb = [](const glm::dvec3& v) { return nlohmann::json::array({v.r, v.g, v.b}); };
   return {{"min", rgb(lo)}, {"mean", rgb(mean)}, {"max", rgb(hi)}};
-}
-
-double peak_rss_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
 void write_report(const RenderOptions& o, const Scene& scene, const Settings& settings, const Frame& frame,

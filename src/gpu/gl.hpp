@@ -2,6 +2,7 @@
 // OpenGL 4.5 core through libepoxy, with move-only RAII handles for GL objects.
 #include <epoxy/gl.h>
 
+#include <cstddef>
 #include <utility>
 
 namespace airlight::gpu {
@@ -36,8 +37,9 @@ private:
 };
 
 namespace detail {
-inline void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
-inline void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
+// Buffers and textures also leave the allocation count (allocated_bytes).
+void delete_buffer(GLuint id);
+void delete_texture(GLuint id);
 inline void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 inline void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
 inline void delete_query(GLuint id) { glDeleteQueries(1, &id); }
@@ -60,5 +62,10 @@ Texture make_texture(GLenum target, GLenum internal_format, int width, int heigh
 Framebuffer make_framebuffer();
 VertexArray make_vertex_array();
 Query make_query(GLenum target);
+
+// Bytes of storage held by the live buffers and textures made above (texel size
+// × width × height × layers), for `airlight bench`: what a method allocates is the
+// difference across its prepare and first frame.
+size_t allocated_bytes();
 
 }  // namespace airlight::gpu

@@ -1,0 +1,435 @@
+// `airlight bench` (issue 6): every method over scenes × sizes × setting sweeps,
+// timed per frame and per pass, with its memory and its error against the
+// cached reference; a CSV, optional log–log plots and an equal-quality table.
+#include "app/commands.hpp"
+#include "app/measure.hpp"
+#include "app/method_settings.hpp"
+#include "app/plot.hpp"
+#include "app/reference_cache.hpp"
+#include "app/scene_source.hpp"
+#include "core/metrics.hpp"
+#include "core/progress.hpp"
+#include "gpu/gl.hpp"
+
+#include <airlight/error.hpp>
+#include <airlight/method.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+namespace airlight::app {
+
+namespace {
+
+struct BenchOptions {
+  std::vector<std::string> scene_files, builtins, methods, sweeps, assignments, sizes{"256x192"};
+  std::string csv, plot, cache;
+  int warmup = 1, frames = 5;
+  double equal_quality = 0.0;  // 0: no equal-quality report
+};
+
+// --sweep method.key=v1,v2,...
+struct Sweep {
+  std::string method, key;
+  std::vector<std::string> values;
+};
+
+// One method with one choice of settings: a point of the plot.
+struct Variant {
+  const MethodInfo* method = nullptr;
+  Settings settings;
+  std::string series;  // its line in the plot: the method and the values of all but its last sweep
+};
+
+struct Spread {
+  double median = 0.0, min = 0.0, max = 0.0;
+};
+
+// One CSV row.
+struct Measurement {
+  std::string scene, method, settings, series;
+  Size size;
+  int frames = 0;
+  Spread frame;
+  std::vector<std::pair<std::string, double>> pass_median_s;  // in the order the frame runs them
+  double gpu_mib = 0.0, peak_rss_mib = 0.0, rel_rmse = 0.0, max_abs = 0.0;
+  bool baseline = false;  // raymarch without jitter: brute force, the equal-quality yardstick
+};
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  for (size_t end; (end = text.find(separator, start)) != std::string::npos; start = end + 1)
+    parts.push_back(text.substr(start, end - start));
+  parts.push_back(text.substr(start));
+  return parts;
+}
+
+Sweep parse_sweep(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos) throw InputError("--sweep", text, "expected method.key=v1,v2,...");
+  const std::string name = text.substr(0, eq);
+  const auto dot = name.find('.');
+  if (dot == std::string::npos) throw InputError("--sweep", name, "name the method: method.key=v1,v2,...");
+  return {name.substr(0, dot), name.substr(dot + 1), split(text.substr(eq + 1), ',')};
+}
+
+std::vector<const MethodInfo*> listed_methods(const std::vector<std::string>& names) {
+  std::vector<const MethodInfo*> methods;
+  for (const auto& name : names) {
+    const auto it = std::find_if(registered_methods().begin(), registered_methods().end(),
+                                 [&](const MethodInfo& m) { return m.name == name; });
+    if (it == registered_methods().end())
+      throw InputError("--methods", name, "unknown method (airlight list methods)");
+    if (std::count(names.begin(), names.end(), name) > 1) throw InputError("--methods", name, "listed twice");
+    methods.push_back(&*it);
+  }
+  return methods;
+}
+
+// "method.key..." names one of the listed methods; `option` and `key` name it in the error.
+void check_listed(const std::string& method, const std::vector<std::string>& listed, const std::string& option,
+                  const std::string& key) {
+  if (std::find(listed.begin(), listed.end(), method) == listed.end())
+    throw InputError(option, key, "method '" + method + "' is not in --methods");
+}
+
+// The --set assignments that belong to `method`: "method.key=value", or
+// "key=value" when it is the only method.
+std::vector<std::string> assignments_for(const std::string& method, const BenchOptions& o) {
+  std::vector<std::string> own;
+  for (const auto& a : o.assignments) {
+    const auto dot = a.find('.'), eq = a.find('=');
+    if (dot == std::string::npos || dot > eq) {
+      if (o.methods.size() > 1) throw InputError("--set", a.substr(0, eq), "name the method: method.key=value");
+      own.push_back(a);
+      continue;
+    }
+    check_listed(a.substr(0, dot), o.methods, "--set", a.substr(0, eq));
+    if (a.substr(0, dot) == method) own.push_back(a);
+  }
+  return own;
+}
+
+// A method's runs: its sweeps (in command-line order) form a cross product, the
+// first varying slowest; every value is validated here, before anything runs.
+std::vector<Variant> method_variants(const MethodInfo& method, const std::vector<Sweep>& sweeps,
+                                     const BenchOptions& o) {
+  std::vector<const Sweep*> own;
+  for (const auto& sweep : sweeps)
+    if (sweep.method == method.name) own.push_back(&sweep);
+  std::vector<Variant> variants{{&method, method_settings(method, assignments_for(method.name, o)), method.name}};
+  for (const auto* sweep : own) {
+    std::vector<Variant> crossed;
+    for (const auto& base : variants)
+      for (const auto& value : sweep->values) {
+        crossed.push_back(base);
+        crossed.back().settings.set(sweep->key, value, "--sweep");
+        if (sweep != own.back()) crossed.back().series += " " + sweep->key + "=" + value;
+      }
+    variants = std::move(crossed);
+  }
+  return variants;
+}
+
+// Every run of every method, in --methods order.
+std::vector<Variant> plan_variants(const BenchOptions& o) {
+  const auto methods = listed_methods(o.methods);
+  std::vector<Sweep> sweeps;
+  for (const auto& text : o.sweeps) {
+    sweeps.push_back(parse_sweep(text));
+    check_listed(sweeps.back().method, o.methods, "--sweep", sweeps.back().method + "." + sweeps.back().key);
+  }
+  std::vector<Variant> planned;
+  for (const auto* method : methods) {
+    const auto variants = method_variants(*method, sweeps, o);
+    planned.insert(planned.end(), variants.begin(), variants.end());
+  }
+  return planned;
+}
+
+std::vector<Scene> load_scenes(const BenchOptions& o) {
+  if (o.scene_files.empty() && o.builtins.empty())
+    throw InputError("command line", "--scene", "give --scene FILE or --builtin NAME (repeatable)");
+  std::vector<Scene> scenes;
+  for (const auto& file : o.scene_files) scenes.push_back(load_scene(file));
+  for (const auto& name : o.builtins) scenes.push_back(builtin_scene(name));
+  return scenes;
+}
+
+Spread spread(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return {(values[(n - 1) / 2] + values[n / 2]) / 2, values.front(), values.back()};
+}
+
+double median(const std::vector<double>& values) { return spread(values).median; }
+
+// The value under `name` in a list kept in first-seen order, appended when absent.
+template <typename T>
+T& entry(std::vector<std::pair<std::string, T>>& list, const std::string& name) {
+  const auto it = std::find_if(list.begin(), list.end(), [&](const auto& p) { return p.first == name; });
+  return it != list.end() ? it->second : list.emplace_back(name, T{}).second;
+}
+
+// Appends one frame's seconds per pass; a pass run several times in a frame
+// counts once, summed.
+void add_pass_times(const std::vector<PassTime>& times,
+                    std::vector<std::pair<std::string, std::vector<double>>>* pass_s) {
+  std::vector<std::pair<std::string, double>> frame;
+  for (const auto& t : times) entry(frame, t.pass) += t.seconds;
+  for (const auto& [pass, seconds] : frame) entry(*pass_s, pass).push_back(seconds);
+}
+
+// Renders W warm-up frames and F timed ones into `m` (times, GPU memory of the
+// first frame over `gpu_before`); returns the last frame.
+Frame time_frames(Method& method, Size size, int warmup, int frames, double gpu_before, Measurement* m) {
+  Progress progress(m->scene + " " + std::to_string(size.width) + "x" + std::to_string(size.height) + " " +
+                        m->method + " " + m->settings,
+                    warmup + frames);
+  std::vector<double> frame_s;
+  std::vector<std::pair<std::string, std::vector<double>>> pass_s;
+  Frame frame;
+  for (int i = 0; i < warmup + frames; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    frame = method.render(size.width, size.height);
+    const double seconds = seconds_since(start);
+    if (i == 0) m->gpu_mib = (static_cast<double>(gpu::allocated_bytes()) - gpu_before) / (1 << 20);
+    progress.advance();
+    if (i < warmup) continue;
+    frame_s.push_back(seconds);
+    add_pass_times(frame.times, &pass_s);
+  }
+  m->frame = spread(frame_s);
+  for (const auto& [pass, s] : pass_s) m->pass_median_s.emplace_back(pass, median(s));
+  return frame;
+}
+
+// Prepares the method, times its frames (the reference: no warm-up and one frame,
+// it is slow and does not vary) and measures the last against `reference`.
+Measurement measure(const Variant& variant, const Scene& scene, Size size, const Image& reference,
+                    const BenchOptions& o) {
+  const bool is_reference = variant.method->name == "reference";
+  Measurement m;
+  m.scene = scene.name;
+  m.method = variant.method->name;
+  m.settings = variant.settings.describe();
+  m.series = variant.series;
+  m.size = size;
+  m.frames = is_reference ? 1 : o.frames;
+  m.baseline = m.method == "raymarch" && variant.settings.choice("jitter") == "none";
+  const double gpu_before = static_cast<double>(gpu::allocated_bytes());
+  auto method = variant.method->create(variant.settings);
+  method->prepare(scene);
+  const Frame last = time_frames(*method, size, is_reference ? 0 : o.warmup, m.frames, gpu_before, &m);
+  m.peak_rss_mib = peak_rss_mib();
+  const ImageError error = compare_images(last.airlight, reference);
+  m.rel_rmse = error.rel_rmse;
+  m.max_abs = error.max_abs;
+  return m;
+}
+
+std::vector<Measurement> run_bench(const BenchOptions& o, const std::vector<Scene>& scenes,
+                                   const std::vector<Size>& sizes, const std::vector<Variant>& variants) {
+  const std::filesystem::path cache = o.cache.empty() ? default_cache_dir() : std::filesystem::path(o.cache);
+  std::vector<Measurement> rows;
+  for (const auto& scene : scenes)
+    for (const auto& size : sizes) {
+      const Image reference = cached_reference(scene, size.width, size.height, cache).airlight;
+      for (const auto& variant : variants) rows.push_back(measure(variant, scene, size, reference, o));
+    }
+  return rows;
+}
+
+// ---- output ---------------------------------------------------------------------
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+// Quoted when it holds a comma or a quote (RFC 4180).
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+void write_csv(const std::filesystem::path& file, const std::vector<std::vector<std::string>>& rows) {
+  std::ofstream out(file);
+  for (const auto& row : rows) {
+    for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_field(row[i]);
+    out << "\n";
+  }
+  if (!out) throw Failure("cannot write " + file.string());
+}
+
+// Pass names in the order first seen, so the columns follow the frame's passes.
+std::vector<std::string> pass_names(const std::vector<Measurement>& rows) {
+  std::vector<std::string> names;
+  for (const auto& m : rows)
+    for (const auto& [pass, s] : m.pass_median_s)
+      if (std::find(names.begin(), names.end(), pass) == names.end()) names.push_back(pass);
+  return names;
+}
+
+void write_measurements(const std::filesystem::path& file, const std::vector<Measurement>& rows) {
+  const auto passes = pass_names(rows);
+  std::vector<std::string> header{"scene", "width", "height", "method", "settings", "frames",
+                                  "frame_median_s", "frame_min_s", "frame_max_s"};
+  for (const auto& pass : passes) header.push_back(pass + "_median_s");
+  header.insert(header.end(), {"gpu_mib", "peak_rss_mib", "rel_rmse", "max_abs"});
+  std::vector<std::vector<std::string>> table{header};
+  for (const auto& m : rows) {
+    std::vector<std::string> row{m.scene, std::to_string(m.size.width), std::to_string(m.size.height), m.method,
+                                 m.settings, std::to_string(m.frames), number(m.frame.median),
+                                 number(m.frame.min), number(m.frame.max)};
+    for (const auto& pass : passes) {
+      const auto it = std::find_if(m.pass_median_s.begin(), m.pass_median_s.end(),
+                                   [&](const auto& p) { return p.first == pass; });
+      row.push_back(it == m.pass_median_s.end() ? "" : number(it->second));
+    }
+    row.insert(row.end(), {number(m.gpu_mib), number(m.peak_rss_mib), number(m.rel_rmse), number(m.max_abs)});
+    table.push_back(std::move(row));
+  }
+  write_csv(file, table);
+}
+
+bool same_case(const Measurement& a, const Measurement& b) {
+  return a.scene == b.scene && a.size.width == b.size.width && a.size.height == b.size.height;
+}
+
+// The rows of each (scene, size), in run order.
+std::vector<std::vector<const Measurement*>> cases(const std::vector<Measurement>& rows) {
+  std::vector<std::vector<const Measurement*>> groups;
+  for (const auto& m : rows) {
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return same_case(*g.front(), m); });
+    if (it == groups.end()) groups.push_back({&m});
+    else it->push_back(&m);
+  }
+  return groups;
+}
+
+std::string case_label(const Measurement& m, const std::string& separator) {
+  return m.scene + separator + std::to_string(m.size.width) + "x" + std::to_string(m.size.height);
+}
+
+// FILE.png for one (scene, size); FILE-<scene>-<WxH>.png for each of several.
+// A line per method and choice of its outer sweeps' values, its last sweep along the line.
+void write_plots(const std::filesystem::path& file, const std::vector<Measurement>& rows) {
+  const auto groups = cases(rows);
+  for (const auto& group : groups) {
+    std::vector<PlotSeries> series;
+    for (const auto* m : group) {
+      if (series.empty() || series.back().label != m->series) series.push_back({m->series, {}});
+      series.back().points.push_back({m->frame.median, m->rel_rmse});
+    }
+    std::filesystem::path out = file;
+    if (groups.size() > 1)
+      out.replace_filename(file.stem().string() + "-" + case_label(*group.front(), "-") + file.extension().string());
+    write_plot(case_label(*group.front(), ", "), series, out);
+  }
+}
+
+// The cheapest run (median frame time) of `method` in the group with rRMSE ≤ E,
+// or of the brute-force baseline when `method` is empty.
+const Measurement* cheapest(const std::vector<const Measurement*>& group, const std::string& method, double e) {
+  const Measurement* best = nullptr;
+  for (const auto* m : group) {
+    const bool wanted = method.empty() ? m->baseline : m->method == method;
+    if (wanted && m->rel_rmse <= e && (!best || m->frame.median < best->frame.median)) best = m;
+  }
+  return best;
+}
+
+// One row per (scene, size) and method: its cheapest run reaching rRMSE ≤ E and
+// that run's time over the baseline's, or a note saying which is missing.
+std::vector<std::vector<std::string>> equal_quality_table(const std::vector<Measurement>& rows, double e,
+                                                          const std::vector<std::string>& methods) {
+  std::vector<std::vector<std::string>> table{{"scene", "width", "height", "method", "settings", "frame_median_s",
+                                               "rel_rmse", "time_ratio", "note"}};
+  for (const auto& group : cases(rows)) {
+    const Measurement& c = *group.front();
+    const Measurement* baseline = cheapest(group, "", e);
+    for (const auto& method : methods) {
+      std::vector<std::string> row{c.scene, std::to_string(c.size.width), std::to_string(c.size.height), method};
+      const Measurement* m = cheapest(group, method, e);
+      if (!m) {
+        row.insert(row.end(), {"", "", "", "", "no run reaches rRMSE <= " + number(e)});
+      } else {
+        row.insert(row.end(), {m->settings, number(m->frame.median), number(m->rel_rmse)});
+        row.push_back(baseline ? number(m->frame.median / baseline->frame.median) : "");
+        row.push_back(baseline ? "" : "no baseline: no raymarch run with jitter=none reaches rRMSE <= " + number(e));
+      }
+      table.push_back(std::move(row));
+    }
+  }
+  return table;
+}
+
+// Columns padded to their widest cell.
+void print_table(const std::vector<std::vector<std::string>>& table) {
+  std::vector<size_t> widths(table.front().size(), 0);
+  for (const auto& row : table)
+    for (size_t i = 0; i < row.size(); ++i) widths[i] = std::max(widths[i], row[i].size());
+  for (const auto& row : table) {
+    std::string line;
+    for (size_t i = 0; i < row.size(); ++i) line += row[i] + std::string(widths[i] - row[i].size() + 2, ' ');
+    std::printf("%s\n", line.substr(0, line.find_last_not_of(' ') + 1).c_str());
+  }
+}
+
+std::filesystem::path equal_quality_file(const std::filesystem::path& csv) {
+  std::filesystem::path file = csv;
+  return file.replace_filename(csv.stem().string() + "-equal-quality" + csv.extension().string());
+}
+
+void bench(const BenchOptions& o) {
+  const std::vector<Variant> variants = plan_variants(o);
+  std::vector<Size> sizes;
+  for (const auto& text : o.sizes) sizes.push_back(parse_size(text, "--sizes"));
+  const std::vector<Scene> scenes = load_scenes(o);
+  const std::vector<Measurement> rows = run_bench(o, scenes, sizes, variants);
+  write_measurements(o.csv, rows);
+  if (!o.plot.empty()) write_plots(o.plot, rows);
+  if (o.equal_quality > 0.0) {
+    const auto table = equal_quality_table(rows, o.equal_quality, o.methods);
+    std::printf("equal quality: the cheapest run with rRMSE <= %s; time_ratio: its median frame time over the "
+                "cheapest raymarch run with jitter=none that reaches it\n",
+                number(o.equal_quality).c_str());
+    print_table(table);
+    write_csv(equal_quality_file(o.csv), table);
+  }
+}
+
+}  // namespace
+
+Run add_bench_command(CLI::App& cli) {
+  auto o = std::make_shared<BenchOptions>();
+  auto* c = cli.add_subcommand("bench", "time methods over scenes, sizes and setting sweeps, with their error");
+  c->add_option("--scene", o->scene_files, "scene file (repeatable)");
+  c->add_option("--builtin", o->builtins, "built-in scene (repeatable; airlight list scenes)");
+  c->add_option("--methods", o->methods, "methods to time, comma-separated (airlight list methods)")
+      ->required()
+      ->delimiter(',');
+  c->add_option("--sweep", o->sweeps, "method.key=v1,v2,...: one run per value (repeatable; crossed per method)");
+  c->add_option("--set", o->assignments, "method.key=value for every run of that method (repeatable)");
+  c->add_option("--sizes", o->sizes, "image sizes WxH, comma-separated")->delimiter(',')->capture_default_str();
+  c->add_option("--warmup", o->warmup, "untimed frames before the timed ones")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  c->add_option("--frames", o->frames, "timed frames per run")->check(CLI::Range(1, 10000))->capture_default_str();
+  c->add_option("--csv", o->csv, "output: one row per scene, size, method and settings")->required();
+  c->add_option("--plot", o->plot, "output: rRMSE against frame time, log-log, per scene and size (PNG)");
+  c->add_option("--equal-quality", o->equal_quality,
+                "E: per method the cheapest run with rRMSE <= E, timed against brute-force raymarch")
+      ->check(CLI::PositiveNumber);
+  c->add_option("--cache", o->cache, "reference cache directory (default $AIRLIGHT_CACHE or ~/.cache/airlight)");
+  return [o] { bench(*o); };
+}
+
+}  // namespace airlight::app

@@ -1,0 +1,145 @@
+// `airlight bench` end to end: a tiny sweep's CSV, plot and equal-quality
+// report, and its bad arguments (exit 2 naming the option and the key).
+#include "core/image_io.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace airlight {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The test's files and its reference cache, removed when the process ends.
+const fs::path& work_dir() {
+  static const struct Dir {
+    fs::path path = fs::temp_directory_path() / ("airlight_bench_test_" + std::to_string(::getpid()));
+    Dir() { fs::create_directories(path); }
+    ~Dir() { fs::remove_all(path); }
+  } dir;
+  return dir.path;
+}
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string read_text(const fs::path& file) {
+  std::stringstream text;
+  text << std::ifstream(file).rdbuf();
+  return text.str();
+}
+
+Outcome run(const std::string& args) {
+  const fs::path out = work_dir() / "stdout.txt", err = work_dir() / "stderr.txt";
+  const std::string command = std::string(AIRLIGHT_EXE) + " bench " + args + " --cache " +
+                              (work_dir() / "cache").string() + " >" + out.string() + " 2>" + err.string();
+  const int raw = std::system(command.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};
+}
+
+// A spot light above the view, straight down past a small shelf onto a floor:
+// nothing bright in view, no jitter, so the march's error falls as steps grow.
+fs::path tiny_scene() {
+  const fs::path file = work_dir() / "tiny.json";
+  std::ofstream(file) << R"({"format": "airlight-scene/1",
+    "camera": {"position": [0, 1.5, 6], "look_at": [0, 1.5, 0], "up": [0, 1, 0], "fov_y_deg": 40,
+               "far": 30},
+    "medium": {"scattering": 0.05, "absorption": 0.01, "phase": {"type": "isotropic"}},
+    "lights": [{"type": "spot", "position": [0, 8, 0], "direction": [0, -1, 0], "intensity": 300,
+                "cone_deg": 30}],
+    "objects": [{"shape": "box", "min": [-0.5, 2.5, -0.5], "max": [0.5, 2.7, 0.5], "albedo": 0.5},
+                {"shape": "plane", "center": [0, 0, 0], "size": [20, 20], "normal": [0, 1, 0], "albedo": 0.5}]})";
+  return file;
+}
+
+using Table = std::vector<std::vector<std::string>>;
+
+// Comma-separated cells (the fields here hold no commas or quotes).
+Table read_csv(const fs::path& file) {
+  Table table;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> row;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(cell);
+    if (!line.empty() && line.back() == ',') row.push_back("");
+    table.push_back(row);
+  }
+  return table;
+}
+
+size_t column(const Table& table, const std::string& name) {
+  const auto& header = table.at(0);
+  const auto it = std::find(header.begin(), header.end(), name);
+  EXPECT_NE(it, header.end()) << "no column " << name;
+  return static_cast<size_t>(it - header.begin());
+}
+
+TEST(Bench, RaymarchStepsSweepWritesFallingErrorPlotAndEqualQuality) {
+  const fs::path csv = work_dir() / "sweep.csv", plot = work_dir() / "sweep.png";
+  const Outcome o = run("--scene " + tiny_scene().string() + " --methods raymarch --sweep raymarch.steps=4,16,64" +
+                        " --sizes 64x48 --frames 2 --warmup 1 --csv " + csv.string() + " --plot " + plot.string() +
+                        " --equal-quality 0.05");
+  ASSERT_EQ(o.status, 0) << o.err;
+
+  const Table rows = read_csv(csv);
+  ASSERT_EQ(rows.size(), 4u);  // the header and one row per step count
+  const size_t error = column(rows, "rel_rmse"), frame = column(rows, "frame_median_s"),
+               airlight = column(rows, "airlight_median_s"), frames = column(rows, "frames");
+  for (size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), rows[0].size());
+    EXPECT_EQ(rows[i][frames], "2");
+    EXPECT_GT(std::stod(rows[i][frame]), 0.0);
+    EXPECT_GT(std::stod(rows[i][airlight]), 0.0);
+    EXPECT_GT(std::stod(rows[i][column(rows, "gpu_mib")]), 0.0);
+    EXPECT_LE(std::stod(rows[i][column(rows, "frame_min_s")]), std::stod(rows[i][frame]));
+    if (i > 1) {
+      EXPECT_LT(std::stod(rows[i][error]), std::stod(rows[i - 1][error])) << "steps row " << i;
+    }
+  }
+
+  const Image image = read_image(plot);
+  EXPECT_GE(image.width, 400);
+  EXPECT_GE(image.height, 300);
+
+  const Table equal = read_csv(work_dir() / "sweep-equal-quality.csv");
+  ASSERT_EQ(equal.size(), 2u);
+  EXPECT_EQ(equal[1][column(equal, "method")], "raymarch");
+  EXPECT_DOUBLE_EQ(std::stod(equal[1][column(equal, "time_ratio")]), 1.0);
+  EXPECT_NE(equal[1][column(equal, "settings")].find("steps=64"), std::string::npos);
+  EXPECT_NE(o.out.find("raymarch"), std::string::npos) << o.out;  // the table on stdout
+}
+
+// Exit 2 and "airlight: error: <option>: <key>: ...".
+void expect_bad_argument(const std::string& args, const std::string& option, const std::string& key) {
+  const Outcome o = run("--scene " + tiny_scene().string() + " --sizes 8x6 --csv " +
+                        (work_dir() / "bad.csv").string() + " " + args);
+  EXPECT_EQ(o.status, 2) << args << "\n" << o.err;
+  const std::string prefix = "airlight: error: " + option + ": " + key + ": ";
+  EXPECT_EQ(o.err.rfind(prefix, 0), 0u) << "expected a message starting with '" << prefix << "', got: " << o.err;
+}
+
+TEST(Bench, BadArgumentsExitTwoNamingOptionAndKey) {
+  expect_bad_argument("--methods raymarch,nope", "--methods", "nope");
+  expect_bad_argument("--methods raymarch --sweep raymarch.steps", "--sweep", "raymarch.steps");
+  expect_bad_argument("--methods raymarch --sweep steps=1,2", "--sweep", "steps");
+  expect_bad_argument("--methods raymarch --sweep raymarch.steps=a", "--sweep", "steps");
+  expect_bad_argument("--methods raymarch --sweep raymarch.bogus=1,2", "--sweep", "bogus");
+  expect_bad_argument("--methods raymarch --sweep planes.planes=15,30", "--sweep", "planes.planes");
+  expect_bad_argument("--methods raymarch --set raymarch.bogus=1", "--set", "bogus");
+  expect_bad_argument("--methods raymarch,planes --set steps=8", "--set", "steps");
+  expect_bad_argument("--methods raymarch --sizes 0x5", "command line", "--sizes");
+  EXPECT_FALSE(fs::exists(work_dir() / "bad.csv"));  // nothing ran
+}
+
+}  // namespace
+}  // namespace airlight

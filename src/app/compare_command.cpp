@@ -1,0 +1,249 @@
+// `airlight compare` (DESIGN §5, issue 6): the reference and each named method
+// on one scene at one size, as a contact sheet and a CSV of their errors.
+#include "app/commands.hpp"
+#include "app/contact_sheet.hpp"
+#include "app/measure.hpp"
+#include "app/method_settings.hpp"
+#include "app/reference_cache.hpp"
+#include "app/scene_source.hpp"
+#include "core/image_io.hpp"
+#include "core/metrics.hpp"
+#include "core/progress.hpp"
+
+#include <airlight/error.hpp>
+#include <airlight/method.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+namespace airlight::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CompareOptions {
+  SceneSource scene;
+  std::string methods, size = "256x192", pass = "airlight", out, csv, images, cache;
+  std::vector<std::string> assignments;
+  float exposure = 1.0f;
+};
+
+// One entry of --methods: "name" or "name:key=value;key=value".
+struct Entry {
+  const MethodInfo* info = nullptr;
+  Settings settings;
+};
+
+// One image with its costs and its error against the reference.
+struct Result {
+  std::string method, settings, changed, note;  // changed: the settings that differ from the defaults
+  Image image;
+  double prepare_s = 0.0, render_s = 0.0, mean = 0.0;
+  bool cached = false;
+  ImageError error;
+};
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  for (size_t end; (end = text.find(separator, start)) != std::string::npos; start = end + 1)
+    parts.push_back(text.substr(start, end - start));
+  parts.push_back(text.substr(start));
+  return parts;
+}
+
+// find_method's message names --method; compare's option is --methods.
+const MethodInfo& lookup(const std::string& name) {
+  for (const auto& info : registered_methods())
+    if (info.name == name) return info;
+  throw InputError("--methods", name, "unknown method (airlight list methods)");
+}
+
+// --set takes "method.key=value" only: with several methods a bare key would be
+// ambiguous, and a method missing from --methods is most likely a typo.
+void check_assignments(const std::vector<std::string>& assignments, const std::string& methods) {
+  const std::vector<std::string> names = split(methods, ',');
+  for (const auto& a : assignments) {
+    const auto dot = a.find('.'), eq = a.find('=');
+    const bool named = dot != std::string::npos && dot < eq;
+    if (!named) throw InputError("--set", a.substr(0, eq), "name the method: --set method.key=value");
+    const std::string method = a.substr(0, dot);
+    const bool listed = std::any_of(names.begin(), names.end(),
+                                    [&](const std::string& n) { return n.substr(0, n.find(':')) == method; });
+    if (!listed) throw InputError("--set", a.substr(0, eq), "the method '" + method + "' is not in --methods");
+  }
+}
+
+// The --set assignments of the entry's method, then the entry's own settings.
+Entry parse_entry(const std::string& text, const std::vector<std::string>& assignments) {
+  const auto colon = text.find(':');
+  const std::string name = text.substr(0, colon);
+  if (name.empty() || (colon != std::string::npos && colon + 1 == text.size()))
+    throw InputError("--methods", text.empty() ? "(empty entry)" : text, "expected NAME or NAME:key=value;key=value, entries separated by ','");
+  Entry entry{&lookup(name), {}};
+  std::vector<std::string> own;
+  for (const auto& a : assignments)
+    if (a.substr(0, a.find('.')) == name) own.push_back(a);
+  entry.settings = method_settings(*entry.info, own);
+  if (colon != std::string::npos)
+    for (const auto& assignment : split(text.substr(colon + 1), ';')) entry.settings.set(assignment, "--methods");
+  return entry;
+}
+
+std::vector<Entry> parse_entries(const CompareOptions& o) {
+  check_assignments(o.assignments, o.methods);
+  std::vector<Entry> entries;
+  for (const auto& text : split(o.methods, ',')) entries.push_back(parse_entry(text, o.assignments));
+  return entries;
+}
+
+// The mean over pixels and channels; a non-finite value is a method's bug.
+double mean_radiance(const Image& image, const std::string& method) {
+  double sum = 0.0;
+  for (const auto& p : image.pixels)
+    for (int c = 0; c < 3; ++c) {
+      if (!std::isfinite(p[c])) throw Failure("method '" + method + "' produced non-finite values");
+      sum += p[c];
+    }
+  return sum / (3.0 * static_cast<double>(image.pixels.size()));
+}
+
+// The settings of `settings` that differ from its method's defaults: what the
+// sheet's labels show, as the full list would not fit under a small image.
+std::string changed_settings(const MethodInfo& info, const Settings& settings) {
+  const std::vector<std::string> defaults = split(Settings(info.settings).describe(), ' ');
+  std::string changed;
+  for (const auto& s : split(settings.describe(), ' '))
+    if (std::find(defaults.begin(), defaults.end(), s) == defaults.end()) changed += (changed.empty() ? "" : " ") + s;
+  return changed.empty() ? "(defaults)" : changed;
+}
+
+Result reference_result(const Scene& scene, Size size, Pass pass, const fs::path& cache_dir) {
+  const std::string key = reference_key(scene, size.width, size.height);
+  ReferenceFrame frame = cached_reference(scene, size.width, size.height, cache_dir);
+  std::fprintf(stderr, "compare: reference %s %s (key %s)\n",
+               frame.cached ? "read from the cache" : "rendered into the cache", cache_dir.c_str(), key.c_str());
+  Result r;
+  r.method = "reference";
+  r.settings = Settings(find_method("reference").settings).describe();  // the defaults the cache renders with
+  r.changed = "(defaults)";
+  r.note = frame.cached ? "cached" : "";
+  r.render_s = frame.seconds;
+  r.cached = frame.cached;
+  r.image = select_pass(Frame{std::move(frame.airlight), std::move(frame.surface), {}, {}}, pass);
+  return r;
+}
+
+Result method_result(const Entry& entry, const Scene& scene, Size size, Pass pass) {
+  Result r;
+  r.method = entry.info->name;
+  r.settings = entry.settings.describe();
+  r.changed = changed_settings(*entry.info, entry.settings);
+  auto method = entry.info->create(entry.settings);
+  auto start = std::chrono::steady_clock::now();
+  method->prepare(scene);
+  r.prepare_s = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  r.image = select_pass(method->render(size.width, size.height), pass);
+  r.render_s = seconds_since(start);
+  return r;
+}
+
+void measure(Result& r, const Image& reference, float exposure) {
+  r.mean = mean_radiance(r.image, r.method);
+  r.error = compare_images(r.image, reference, exposure);
+}
+
+// Settings hold no commas or quotes today, but a choice's text could.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+// The columns README.md "## Comparing" documents.
+void write_csv(const std::vector<Result>& results, const std::string& pass, const fs::path& file) {
+  std::ofstream out(file);
+  out << "method,settings,width,height,pass,rel_rmse,max_abs,psnr_db,mean_radiance,reference_mean,prepare_s,render_s,"
+         "cached\n";
+  char numbers[512];
+  for (const auto& r : results) {
+    std::snprintf(numbers, sizeof numbers, "%d,%d,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.6f,%d", r.image.width,
+                  r.image.height, pass.c_str(), r.error.rel_rmse, r.error.max_abs, r.error.psnr_db, r.mean,
+                  r.error.mean_reference, r.prepare_s, r.render_s, r.cached ? 1 : 0);
+    out << csv_field(r.method) << ',' << csv_field(r.settings) << ',' << numbers << '\n';
+  }
+  if (!out) throw Failure("cannot write " + file.string());
+}
+
+// reference.pfm, then <index>_<method>.pfm in the order of --methods.
+void write_images(const std::vector<Result>& results, const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw Failure("cannot create " + dir.string() + ": " + ec.message());
+  write_image(results[0].image, dir / "reference.pfm");
+  for (size_t i = 1; i < results.size(); ++i)
+    write_image(results[i].image, dir / (std::to_string(i) + "_" + results[i].method + ".pfm"));
+}
+
+void write_sheet(const std::vector<Result>& results, float exposure, const fs::path& file) {
+  std::vector<SheetEntry> entries;
+  for (const auto& r : results)
+    entries.push_back({r.method, r.changed, r.note, r.prepare_s + r.render_s, r.error.rel_rmse, &r.image});
+  write_contact_sheet(entries, exposure, file);
+}
+
+void compare(const CompareOptions& o) {
+  // Every argument is checked before the first (slow) render.
+  const Size size = parse_size(o.size, "--size");
+  const std::vector<Entry> entries = parse_entries(o);
+  const Pass pass = o.pass == "composite" ? Pass::composite : Pass::airlight;
+  const Scene scene = o.scene.load();
+  std::vector<Result> results{
+      reference_result(scene, size, pass, o.cache.empty() ? default_cache_dir() : fs::path(o.cache))};
+  {
+    Progress progress("compare", static_cast<long>(entries.size()));
+    for (const auto& entry : entries) {
+      results.push_back(method_result(entry, scene, size, pass));
+      progress.advance();
+    }
+  }
+  for (auto& r : results) measure(r, results[0].image, o.exposure);
+  if (!o.images.empty()) write_images(results, o.images);
+  if (!o.csv.empty()) write_csv(results, o.pass, o.csv);
+  write_sheet(results, o.exposure, o.out);
+}
+
+}  // namespace
+
+Run add_compare_command(CLI::App& cli) {
+  auto o = std::make_shared<CompareOptions>();
+  auto* command = cli.add_subcommand("compare", "render the reference and several methods; write a contact sheet");
+  o->scene.add_options(*command);
+  command
+      ->add_option("--methods", o->methods,
+                   "methods in order, separated by ','; an entry may carry its own settings: "
+                   "NAME:key=value;key=value (a method may appear several times)")
+      ->required();
+  command->add_option("--set", o->assignments, "method.key=value for every entry of that method (repeatable)");
+  command->add_option("--size", o->size, "image size WxH")->capture_default_str();
+  command->add_option("--out", o->out, "contact sheet PNG")->required();
+  command->add_option("--csv", o->csv, "CSV of the errors and times (README: Comparing)");
+  command->add_option("--images", o->images, "directory for the images as PFM: reference.pfm, <index>_<method>.pfm");
+  command->add_option("--pass", o->pass, "what to compare (DESIGN §6 measures the airlight)")
+      ->check(CLI::IsMember({"airlight", "composite"}))
+      ->capture_default_str();
+  command->add_option("--exposure", o->exposure, "tone mapping: radiance is multiplied by this")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--cache", o->cache, "reference cache directory (default $AIRLIGHT_CACHE, else ~/.cache/airlight)");
+  return [o] { compare(*o); };
+}
+
+}  // namespace airlight::app

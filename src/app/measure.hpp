@@ -1,0 +1,13 @@
+#pragma once
+// Measurements shared by render's report and bench: wall-clock seconds and the
+// process's peak resident memory.
+#include <chrono>
+
+namespace airlight::app {
+
+double seconds_since(std::chrono::steady_clock::time_point start);
+
+// The process's peak resident set so far, in MiB (getrusage).
+double peak_rss_mib();
+
+}  // namespace airlight::app

@@ -1,0 +1,212 @@
+#include "app/reference_cache.hpp"
+
+#include "core/image_io.hpp"
+#include "reference/reference.hpp"
+
+#include <airlight/error.hpp>
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <string_view>
+
+namespace airlight::app {
+
+namespace fs = std::filesystem;
+
+fs::path default_cache_dir() {
+  if (const char* dir = std::getenv("AIRLIGHT_CACHE"); dir && *dir) return dir;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "airlight";
+  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "airlight";
+  return fs::temp_directory_path() / "airlight-cache";  // no home: still a usable cache for this machine
+}
+
+namespace {
+
+// 64-bit FNV-1a over the fields one by one (never whole structs, whose padding
+// bytes are indeterminate).
+class Hasher {
+public:
+  void bytes(const void* data, size_t n) {
+    for (const auto* p = static_cast<const unsigned char*>(data); n--; ++p) hash_ = (hash_ ^ *p) * 0x100000001b3ull;
+  }
+  template <typename T>
+  void add(const T& value) {
+    bytes(&value, sizeof value);
+  }
+  void add(const glm::vec3& v) { bytes(&v[0], 3 * sizeof(float)); }
+  void add(const glm::vec2& v) { bytes(&v[0], 2 * sizeof(float)); }
+  void add(std::string_view text) {
+    add(text.size());
+    bytes(text.data(), text.size());
+  }
+  template <typename T>
+  void add(const std::vector<T>& items) {
+    add(items.size());
+    for (const auto& item : items) add(item);
+  }
+  std::uint64_t value() const { return hash_; }
+
+private:
+  std::uint64_t hash_ = 0xcbf29ce484222325ull;
+};
+
+void add(Hasher& h, const Phase& phase) {
+  h.add(phase.lobes.size());
+  for (const auto& lobe : phase.lobes) {
+    h.add(lobe.type);
+    h.add(lobe.g);
+    h.add(lobe.weight);
+  }
+}
+
+void add(Hasher& h, const Image& image) {
+  h.add(image.width);
+  h.add(image.height);
+  h.add(image.pixels);
+}
+
+void add(Hasher& h, const Camera& c) {
+  for (const auto& v : {c.position, c.look_at, c.up}) h.add(v);
+  for (float f : {c.fov_y_deg, c.near, c.far}) h.add(f);
+}
+
+void add(Hasher& h, const Light& light) {
+  h.add(light.type);
+  for (const auto& v : {light.position, light.direction, light.intensity, light.irradiance, light.gobo_up}) h.add(v);
+  h.add(light.cone_deg);
+  h.add(light.edge_deg);
+  h.add(light.gobo != nullptr);
+  if (light.gobo) add(h, *light.gobo);
+  h.add(light.beam.has_value());
+  if (light.beam) {
+    h.add(light.beam->origin);
+    h.add(light.beam->size);
+    h.add(light.beam->length);
+  }
+}
+
+void add(Hasher& h, const Volume& v) {
+  for (const auto& c : {v.min, v.max, v.sigma_s, v.sigma_a}) h.add(c);
+  add(h, v.phase);
+}
+
+void add(Hasher& h, const Mesh& mesh) {
+  h.add(mesh.positions);
+  h.add(mesh.normals);
+  h.add(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) h.bytes(&t[0], 3 * sizeof(unsigned));
+  h.add(mesh.albedo);
+}
+
+template <typename T>
+void add_all(Hasher& h, const std::vector<T>& items) {
+  h.add(items.size());
+  for (const auto& item : items) add(h, item);
+}
+
+struct Entry {
+  fs::path airlight, surface, info;
+};
+
+Entry entry(const fs::path& dir, const std::string& key) {
+  return {dir / (key + ".airlight.pfm"), dir / (key + ".surface.pfm"), dir / (key + ".json")};
+}
+
+// A unique name beside `target` with the same extension (write_image picks the
+// format by extension), renamed over it once complete.
+fs::path temp_beside(const fs::path& target) {
+  static std::atomic<int> counter{0};
+  return fs::path(target).replace_extension(".tmp" + std::to_string(::getpid()) + "_" + std::to_string(counter++) +
+                                            target.extension().string());
+}
+
+void publish(const fs::path& temp, const fs::path& target) {
+  std::error_code ec;
+  fs::rename(temp, target, ec);
+  if (ec) throw Failure("cannot write " + target.string() + ": " + ec.message());
+}
+
+void store_image(const Image& image, const fs::path& target) {
+  const fs::path temp = temp_beside(target);
+  write_image(image, temp);
+  publish(temp, target);
+}
+
+// The JSON is written last, so its presence means both images are complete.
+void store(const ReferenceFrame& frame, const Entry& e) {
+  store_image(frame.airlight, e.airlight);
+  store_image(frame.surface, e.surface);
+  const fs::path temp = temp_beside(e.info);
+  if (!(std::ofstream(temp) << nlohmann::json{{"seconds", frame.seconds}}.dump() << "\n"))
+    throw Failure("cannot write " + temp.string());
+  publish(temp, e.info);
+}
+
+// The cached frame, or none when absent, unreadable or of another size.
+std::optional<ReferenceFrame> load(const Entry& e, int width, int height) {
+  std::ifstream info(e.info);
+  if (!info) return std::nullopt;
+  try {
+    ReferenceFrame frame{read_image(e.airlight), read_image(e.surface),
+                         nlohmann::json::parse(info).at("seconds").get<double>(), true};
+    const bool sized = frame.airlight.width == width && frame.airlight.height == height &&
+                       frame.surface.width == width && frame.surface.height == height;
+    if (sized) return frame;
+  } catch (const std::exception&) {
+    // A damaged entry is rendered again and overwritten.
+  }
+  return std::nullopt;
+}
+
+ReferenceFrame render_reference(const Scene& scene, int width, int height) {
+  const auto start = std::chrono::steady_clock::now();
+  reference::Frame frame = reference::render(scene, width, height);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {std::move(frame.airlight), std::move(frame.surface), seconds, false};
+}
+
+}  // namespace
+
+std::string reference_key(const Scene& scene, int width, int height) {
+  Hasher h;
+  h.add(std::string_view("airlight-reference/1"));  // bump when the reference's output changes
+  add(h, scene.camera);
+  for (const auto& c : {scene.medium.sigma_s, scene.medium.sigma_a}) h.add(c);
+  add(h, scene.medium.phase);
+  h.add(scene.light_model.type);
+  h.add(scene.light_model.a0);
+  h.add(scene.light_model.a1);
+  add_all(h, scene.volumes);
+  add_all(h, scene.lights);
+  add_all(h, scene.meshes);
+  h.add(scene.ambient);
+  h.add(width);
+  h.add(height);
+  const reference::Settings settings;
+  h.add(settings.rel_tol);
+  h.add(settings.min_segments);
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.value()));
+  return hex;
+}
+
+ReferenceFrame cached_reference(const Scene& scene, int width, int height, const fs::path& cache_dir) {
+  const Entry e = entry(cache_dir, reference_key(scene, width, height));
+  if (auto frame = load(e, width, height)) return *frame;
+  std::error_code ec;
+  fs::create_directories(cache_dir, ec);
+  if (ec) throw Failure("cannot create the reference cache " + cache_dir.string() + ": " + ec.message());
+  ReferenceFrame frame = render_reference(scene, width, height);
+  store(frame, e);
+  return frame;
+}
+
+}  // namespace airlight::app
