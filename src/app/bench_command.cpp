@@ -58,15 +58,6 @@ struct Measurement {
   bool baseline = false;  // raymarch without jitter: brute force, the equal-quality yardstick
 };
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  size_t start = 0;
-  for (size_t end; (end = text.find(separator, start)) != std::string::npos; start = end + 1)
-    parts.push_back(text.substr(start, end - start));
-  parts.push_back(text.substr(start));
-  return parts;
-}
-
 Sweep parse_sweep(const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos) throw InputError("--sweep", text, "expected method.key=v1,v2,...");

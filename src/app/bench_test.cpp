@@ -1,49 +1,15 @@
 // `airlight bench` end to end: a tiny sweep's CSV, plot and equal-quality
 // report, and its bad arguments (exit 2 naming the option and the key).
+#include "app/command_test_support.hpp"
 #include "core/image_io.hpp"
-
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace airlight {
 namespace {
 
-namespace fs = std::filesystem;
-
-// The test's files and its reference cache, removed when the process ends.
-const fs::path& work_dir() {
-  static const struct Dir {
-    fs::path path = fs::temp_directory_path() / ("airlight_bench_test_" + std::to_string(::getpid()));
-    Dir() { fs::create_directories(path); }
-    ~Dir() { fs::remove_all(path); }
-  } dir;
-  return dir.path;
-}
-
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string read_text(const fs::path& file) {
-  std::stringstream text;
-  text << std::ifstream(file).rdbuf();
-  return text.str();
-}
+using namespace test;
 
 Outcome run(const std::string& args) {
-  const fs::path out = work_dir() / "stdout.txt", err = work_dir() / "stderr.txt";
-  const std::string command = std::string(AIRLIGHT_EXE) + " bench " + args + " --cache " +
-                              (work_dir() / "cache").string() + " >" + out.string() + " 2>" + err.string();
-  const int raw = std::system(command.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};
+  return run_airlight("bench " + args + " --cache " + (work_dir() / "cache").string());
 }
 
 // A spot light above the view, straight down past a small shelf onto a floor:
@@ -59,29 +25,6 @@ fs::path tiny_scene() {
     "objects": [{"shape": "box", "min": [-0.5, 2.5, -0.5], "max": [0.5, 2.7, 0.5], "albedo": 0.5},
                 {"shape": "plane", "center": [0, 0, 0], "size": [20, 20], "normal": [0, 1, 0], "albedo": 0.5}]})";
   return file;
-}
-
-using Table = std::vector<std::vector<std::string>>;
-
-// Comma-separated cells (the fields here hold no commas or quotes).
-Table read_csv(const fs::path& file) {
-  Table table;
-  std::ifstream in(file);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> row;
-    std::stringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(cell);
-    if (!line.empty() && line.back() == ',') row.push_back("");
-    table.push_back(row);
-  }
-  return table;
-}
-
-size_t column(const Table& table, const std::string& name) {
-  const auto& header = table.at(0);
-  const auto it = std::find(header.begin(), header.end(), name);
-  EXPECT_NE(it, header.end()) << "no column " << name;
-  return static_cast<size_t>(it - header.begin());
 }
 
 TEST(Bench, RaymarchStepsSweepWritesFallingErrorPlotAndEqualQuality) {
@@ -121,11 +64,9 @@ TEST(Bench, RaymarchStepsSweepWritesFallingErrorPlotAndEqualQuality) {
 
 // Exit 2 and "airlight: error: <option>: <key>: ...".
 void expect_bad_argument(const std::string& args, const std::string& option, const std::string& key) {
-  const Outcome o = run("--scene " + tiny_scene().string() + " --sizes 8x6 --csv " +
-                        (work_dir() / "bad.csv").string() + " " + args);
-  EXPECT_EQ(o.status, 2) << args << "\n" << o.err;
-  const std::string prefix = "airlight: error: " + option + ": " + key + ": ";
-  EXPECT_EQ(o.err.rfind(prefix, 0), 0u) << "expected a message starting with '" << prefix << "', got: " << o.err;
+  expect_bad_input(run("--scene " + tiny_scene().string() + " --sizes 8x6 --csv " + (work_dir() / "bad.csv").string() +
+                       " " + args),
+                   option, key, args);
 }
 
 TEST(Bench, BadArgumentsExitTwoNamingOptionAndKey) {

@@ -1,9 +1,8 @@
 // The `airlight` command end to end: exit statuses and messages (DESIGN §5).
+#include "app/command_test_support.hpp"
 #include "core/image_io.hpp"
 
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -14,48 +13,14 @@
 namespace airlight {
 namespace {
 
-namespace fs = std::filesystem;
+using namespace test;
 
-const fs::path& work_dir() {
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("airlight_cli_test_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
-
-struct Outcome {
-  int status = -1;
-  std::string err;
-};
-
-// Runs the command with `env` ("NAME=value" or empty) in its environment.
-Outcome run_with_env(const std::string& env, const std::string& args) {
-  const fs::path err = work_dir() / "stderr.txt";
-  const std::string command =
-      (env.empty() ? "" : "env " + env + " ") + std::string(AIRLIGHT_EXE) + " " + args + " >/dev/null 2>" + err.string();
-  const int raw = std::system(command.c_str());
-  std::ifstream in(err);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
-}
-
-Outcome run(const std::string& args) { return run_with_env("", args); }
-
-fs::path write_file(const std::string& name, const std::string& text) {
-  const fs::path file = work_dir() / name;
-  std::ofstream(file) << text;
-  return file;
-}
+Outcome run(const std::string& args) { return run_airlight(args); }
+Outcome run_with_env(const std::string& env, const std::string& args) { return run_airlight(args, env); }
 
 // Exit 2 and a message that starts with "<file>: <key>:" (InputError's form).
 void expect_bad_input(const std::string& args, const std::string& file, const std::string& key) {
-  const Outcome o = run(args);
-  EXPECT_EQ(o.status, 2) << args << "\n" << o.err;
-  const std::string prefix = "airlight: error: " + file + (key.empty() ? "" : ": " + key) + ": ";
-  EXPECT_EQ(o.err.rfind(prefix, 0), 0u) << "expected a message starting with '" << prefix << "', got: " << o.err;
+  test::expect_bad_input(run(args), file, key, args);
 }
 
 const std::string header = R"("format": "airlight-scene/1")";

@@ -48,15 +48,6 @@ struct Result {
   ImageError error;
 };
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  size_t start = 0;
-  for (size_t end; (end = text.find(separator, start)) != std::string::npos; start = end + 1)
-    parts.push_back(text.substr(start, end - start));
-  parts.push_back(text.substr(start));
-  return parts;
-}
-
 // find_method's message names --method; compare's option is --methods.
 const MethodInfo& lookup(const std::string& name) {
   for (const auto& info : registered_methods())

@@ -1,10 +1,7 @@
 // `airlight compare` end to end (issue 6): the sheet, the CSV checked against
 // the PFM outputs, the reference cache, and bad arguments.
+#include "app/command_test_support.hpp"
 #include "core/image_io.hpp"
-
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -15,37 +12,9 @@
 namespace airlight {
 namespace {
 
-namespace fs = std::filesystem;
+using namespace test;
 
-const fs::path& work_dir() {
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("airlight_compare_test_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
-
-// Each test process removes its directory, caches included, when it ends.
-class RemoveWorkDir : public ::testing::Environment {
-  void TearDown() override { fs::remove_all(work_dir()); }
-};
-const auto* const remove_work_dir = ::testing::AddGlobalTestEnvironment(new RemoveWorkDir);
-
-struct Outcome {
-  int status = -1;
-  std::string err;
-};
-
-Outcome run(const std::string& args) {
-  const fs::path err = work_dir() / "stderr.txt";
-  const std::string command = std::string(AIRLIGHT_EXE) + " " + args + " >/dev/null 2>" + err.string();
-  const int raw = std::system(command.c_str());
-  std::stringstream text;
-  text << std::ifstream(err).rdbuf();
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
-}
+Outcome run(const std::string& args) { return run_airlight(args); }
 
 // A spot in fog over a floor: a visible cone and a lit disc (the light itself
 // above the frame).
@@ -62,19 +31,6 @@ const fs::path& scene_file() {
   return file;
 }
 
-std::vector<std::vector<std::string>> read_csv(const fs::path& file) {
-  std::vector<std::vector<std::string>> rows;
-  std::ifstream in(file);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> fields;
-    std::stringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
-    rows.push_back(fields);
-  }
-  return rows;
-}
-
-// DESIGN §6 written out again, independently of core/metrics.
 double rel_rmse(const Image& m, const Image& r) {
   double squared = 0.0, sum = 0.0;
   for (size_t i = 0; i < r.pixels.size(); ++i)
@@ -131,23 +87,21 @@ TEST(Compare, WritesSheetAndCsvThatMatchThePfms) {
 }
 
 // Exit 2 and a message that starts with "<file>: <key>:" (InputError's form).
-void expect_bad_input(const std::string& options, const std::string& file, const std::string& key) {
-  const Outcome o = run("compare --scene " + scene_file().string() + " --cache " +
-                        (work_dir() / "cache").string() + " --out " + (work_dir() / "bad.png").string() + " " + options);
-  EXPECT_EQ(o.status, 2) << options << "\n" << o.err;
-  const std::string prefix = "airlight: error: " + file + ": " + key + ": ";
-  EXPECT_EQ(o.err.rfind(prefix, 0), 0u) << "expected a message starting with '" << prefix << "', got: " << o.err;
+void expect_bad_options(const std::string& options, const std::string& file, const std::string& key) {
+  expect_bad_input(run("compare --scene " + scene_file().string() + " --cache " + (work_dir() / "cache").string() +
+                       " --out " + (work_dir() / "bad.png").string() + " " + options),
+                   file, key, options);
 }
 
 TEST(Compare, BadArgumentsExitTwoNamingThem) {
-  expect_bad_input("--methods raymarch,bogus", "--methods", "bogus");
-  expect_bad_input("--methods 'raymarch:bogus=1'", "--methods", "bogus");
-  expect_bad_input("--methods 'raymarch:steps=-3'", "--methods", "steps");
-  expect_bad_input("--methods raymarch --set raymarch.bogus=1", "--set", "bogus");
-  expect_bad_input("--methods raymarch --set planes.steps=1", "--set", "planes.steps");
-  expect_bad_input("--methods raymarch,,planes", "--methods", "(empty entry)");
-  expect_bad_input("--methods raymarch:", "--methods", "raymarch:");
-  expect_bad_input("--methods raymarch --size 0x5", "command line", "--size");
+  expect_bad_options("--methods raymarch,bogus", "--methods", "bogus");
+  expect_bad_options("--methods 'raymarch:bogus=1'", "--methods", "bogus");
+  expect_bad_options("--methods 'raymarch:steps=-3'", "--methods", "steps");
+  expect_bad_options("--methods raymarch --set raymarch.bogus=1", "--set", "bogus");
+  expect_bad_options("--methods raymarch --set planes.steps=1", "--set", "planes.steps");
+  expect_bad_options("--methods raymarch,,planes", "--methods", "(empty entry)");
+  expect_bad_options("--methods raymarch:", "--methods", "raymarch:");
+  expect_bad_options("--methods raymarch --size 0x5", "command line", "--size");
   EXPECT_EQ(run("compare --scene " + scene_file().string() + " --out x.png").status, 2);  // --methods is required
 }
 

@@ -12,4 +12,7 @@ namespace airlight::app {
 // or a key naming another method.
 Settings method_settings(const MethodInfo& method, const std::vector<std::string>& assignments);
 
+// The parts of `text` between separators, empty ones included ("a,,b" → a, "", b).
+std::vector<std::string> split(const std::string& text, char separator);
+
 }  // namespace airlight::app

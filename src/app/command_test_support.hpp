@@ -1,0 +1,91 @@
+#pragma once
+// End-to-end tests of the `airlight` executable (AIRLIGHT_EXE): a work
+// directory per test process (removed when it ends), a run's exit status,
+// stdout and stderr, CSV output, and the bad-input check of DESIGN §5 — exit 2
+// with a message "airlight: error: <file or option>: <key>: ...".
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace airlight::test {
+
+namespace fs = std::filesystem;
+
+inline const fs::path& work_dir() {
+  static const struct Dir {
+    fs::path path = fs::temp_directory_path() / ("airlight_command_test_" + std::to_string(::getpid()));
+    Dir() {
+      fs::remove_all(path);
+      fs::create_directories(path);
+    }
+    ~Dir() { fs::remove_all(path); }
+  } dir;
+  return dir.path;
+}
+
+inline std::string read_text(const fs::path& file) {
+  std::stringstream text;
+  text << std::ifstream(file).rdbuf();
+  return text.str();
+}
+
+inline fs::path write_file(const std::string& name, const std::string& text) {
+  const fs::path file = work_dir() / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+// Runs `airlight ARGS` with `env` ("NAME=value ..." or empty) in its environment.
+inline Outcome run_airlight(const std::string& args, const std::string& env = "") {
+  const fs::path out = work_dir() / "stdout.txt", err = work_dir() / "stderr.txt";
+  const std::string command = (env.empty() ? "" : "env " + env + " ") + std::string(AIRLIGHT_EXE) + " " + args +
+                              " >" + out.string() + " 2>" + err.string();
+  const int raw = std::system(command.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};
+}
+
+// Exit 2 and a message starting "airlight: error: <where>: <key>: " (no key: "<where>: ").
+inline void expect_bad_input(const Outcome& o, const std::string& where, const std::string& key,
+                             const std::string& context) {
+  EXPECT_EQ(o.status, 2) << context << "\n" << o.err;
+  const std::string prefix = "airlight: error: " + where + (key.empty() ? "" : ": " + key) + ": ";
+  EXPECT_EQ(o.err.rfind(prefix, 0), 0u) << "expected a message starting with '" << prefix << "', got: " << o.err;
+}
+
+using Table = std::vector<std::vector<std::string>>;
+
+// Comma-separated cells (the fields here hold no commas or quotes).
+inline Table read_csv(const fs::path& file) {
+  Table table;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> row;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(cell);
+    if (!line.empty() && line.back() == ',') row.push_back("");
+    table.push_back(row);
+  }
+  return table;
+}
+
+inline size_t column(const Table& table, const std::string& name) {
+  const auto& header = table.at(0);
+  const auto it = std::find(header.begin(), header.end(), name);
+  EXPECT_NE(it, header.end()) << "no column " << name;
+  return static_cast<size_t>(it - header.begin());
+}
+
+}  // namespace airlight::test
