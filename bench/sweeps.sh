@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The standard sweeps (issue 6): each method's accuracy knob swept on the seeds'
-# built-in scenes at 256×192 and 512×384, 1 warm-up and 3 timed frames per run,
+# built-in scenes at 256×192 and 512×384, 1 warm-up and 2 timed frames per run,
 # timed against brute force (raymarch, uniform steps, no jitter) at equal
 # quality; and analytic, which has no volumetric shadows, on the one scene where
 # it can be exact (bench/scenes/open_fog.json: nothing shadows the lights).
@@ -8,7 +8,7 @@
 # "Benchmarking"), their -equal-quality.csv tables, one plot per scene and size
 # (seeds-<scene>-<WxH>.png, analytic-open_fog-<WxH>.png) and machine.txt (date,
 # kernel, CPU). References come from the default cache (README "Benchmarking").
-# About 15 minutes on 2 idle cores (llvmpipe), most of it in raymarch N = 256.
+# About 20 minutes on 2 cores (llvmpipe), most of it in raymarch N = 128 at 512×384.
 # usage: bench/sweeps.sh [E]   (E: the equal-quality rRMSE, default 0.05; builds first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,19 +25,19 @@ mkdir -p "$results"
   echo "$(nproc) cores"
 } >"$results/machine.txt"
 
-common=(--sizes 256x192,512x384 --warmup 1 --frames 3 --equal-quality "$quality")
+common=(--sizes 256x192,512x384 --warmup 1 --frames 2 --equal-quality "$quality")
 
 $airlight bench "${common[@]}" \
   --builtin teapot_spot --builtin stage --builtin stained_glass --builtin three_lights \
   --methods raymarch,interleaved,planes \
-  --sweep raymarch.sampling=uniform,equiangular --sweep raymarch.steps=16,32,64,128,256 \
-  --sweep interleaved.steps=64,128,256 \
+  --sweep raymarch.sampling=uniform,equiangular --sweep raymarch.steps=16,32,64,128 \
+  --sweep interleaved.sampling=uniform,equiangular --sweep interleaved.steps=64,128 \
   --sweep planes.sampling=plane,lit --sweep planes.planes=15,30,75,150 \
   --csv "$results/seeds.csv" --plot "$results/seeds.png"
 
 $airlight bench "${common[@]}" \
   --scene bench/scenes/open_fog.json \
   --methods raymarch,analytic \
-  --sweep raymarch.sampling=uniform,equiangular --sweep raymarch.steps=16,32,64,128,256 \
+  --sweep raymarch.sampling=uniform,equiangular --sweep raymarch.steps=16,32,64,128 \
   --sweep analytic.F=table,shader \
   --csv "$results/analytic.csv" --plot "$results/analytic.png"
