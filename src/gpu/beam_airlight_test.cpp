@@ -3,6 +3,7 @@
 // to the beam) against the reference on a small scene. The methods sit above
 // the gpu layer; only this test links them.
 #include "core/metrics.hpp"
+#include "methods/raymarch/march_test_support.hpp"
 
 #include <airlight/method.hpp>
 #include <airlight/scene.hpp>
@@ -62,12 +63,7 @@ Scene beam_scene() {
 }
 
 Frame render(const std::string& method_name, const Scene& scene, const std::vector<std::string>& assignments) {
-  const MethodInfo& info = find_method(method_name);
-  Settings settings(info.settings);
-  for (const auto& a : assignments) settings.set(a, "test");
-  auto method = info.create(settings);
-  method->prepare(scene);
-  return method->render(width, height);
+  return methods::test::render(find_method(method_name), scene, assignments, width, height);
 }
 
 // Uniform steps (~3 cm here) straddle the beam's faces, where the integrand

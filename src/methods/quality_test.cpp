@@ -1,6 +1,7 @@
 // The quality contract (DESIGN §6): every method against `reference` on the
 // airlight pass, with every tolerance in this one table beside its reason.
 #include "core/metrics.hpp"
+#include "methods/raymarch/march_test_support.hpp"
 
 #include <airlight/method.hpp>
 #include <gtest/gtest.h>
@@ -100,12 +101,7 @@ Scene case_scene(const std::string& name) {
 }
 
 Frame render(const std::string& method_name, const Scene& scene, const std::vector<std::string>& assignments) {
-  const MethodInfo& info = find_method(method_name);
-  Settings settings(info.settings);
-  for (const auto& a : assignments) settings.set(a, "test");
-  auto method = info.create(settings);
-  method->prepare(scene);
-  return method->render(width, height);
+  return methods::test::render(find_method(method_name), scene, assignments, width, height);
 }
 
 const Image& reference_airlight(const std::string& scene_name) {
