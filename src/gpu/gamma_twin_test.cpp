@@ -52,11 +52,7 @@ Scene gamma_scene(const Phase& phase, LightModelType model) {
   sun.direction = glm::normalize(glm::vec3(-0.2f, -1.0f, -0.5f));
   sun.irradiance = glm::vec3(0.5f);
   s.lights = {point, spot, soft, beam, sun};
-  Mesh floor;  // SharedFrame draws something
-  floor.positions = {{-6, -1, 6}, {6, -1, 6}, {6, -1, -6}, {-6, -1, -6}};
-  floor.normals.assign(4, {0, 1, 0});
-  floor.triangles = {{0, 1, 2}, {0, 2, 3}};
-  s.meshes.push_back(floor);
+  s.meshes.push_back(floor_mesh());  // SharedFrame draws something
   return s;
 }
 

@@ -10,6 +10,7 @@
 #include "optics/media.hpp"
 #include "optics/phase.hpp"
 
+#include <airlight/scene.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -111,5 +112,14 @@ inline glm::vec3 random_unit(std::mt19937& rng) {
 }
 
 inline float uniform(std::mt19937& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
+
+// A 12 m square floor at y = -1: something for the frame's passes to draw.
+inline Mesh floor_mesh() {
+  Mesh floor;
+  floor.positions = {{-6, -1, 6}, {6, -1, 6}, {6, -1, -6}, {-6, -1, -6}};
+  floor.normals.assign(4, {0, 1, 0});
+  floor.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return floor;
+}
 
 }  // namespace airlight::gpu::twin
