@@ -1,18 +1,49 @@
 #pragma once
-// The method contract (DESIGN §3): a method is prepared once per scene, then
-// renders frames; it writes L_air, and the surface term L_surf·T(d) comes from the
-// shared frame (or, for the CPU reference, from the reference itself).
-// Compositing L = L_surf·T + L_air is shared code (composite()).
+// The method contract (docs/design.md §3). A method is prepared once per scene
+// (what it derives from the geometry, the tables it builds); then every frame
+// brings its own inputs — camera, size, the lights and the medium as they are
+// in this frame, a transform per object — and the method writes L_air where it
+// keeps its output: a float GPU texture for GPU methods. Reading images back to
+// the CPU is a separate step (read_back) that batch commands ask for and an
+// interactive caller never pays. An engine hands in its own depth buffer and
+// shadow maps and receives L_air and T(d) in its own textures
+// (<airlight/engine.hpp>).
 #include <airlight/image.hpp>
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
 #include <functional>
+#include <glm/mat4x4.hpp>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace airlight {
+
+struct EngineFrame;  // <airlight/engine.hpp>
+
+// What a frame may change without a new prepare. Lights may move, change
+// colour, cone, type or number; a gobo must be one the prepared scene's lights
+// already use. Bounded volumes and meshes' shapes are fixed at prepare; meshes
+// move by their transforms.
+struct FrameInputs {
+  Camera camera;
+  int width = 0, height = 0;
+  std::vector<Light> lights;
+  Medium medium;
+  LightModel light_model;
+  // Object → world per mesh of the prepared scene, in Scene::meshes' order;
+  // empty means every mesh stays where the scene put it.
+  std::vector<glm::mat4> transforms;
+};
+
+// The scene as loaded, at width × height: the first frame's inputs.
+FrameInputs frame_inputs(const Scene& scene, int width, int height);
+
+// The scene a frame shows: the inputs' camera, lights, medium and light model,
+// and its meshes moved by the transforms (what the reference renders).
+// Throws InputError("frame", "transforms") when their count is not the scene's mesh count.
+Scene posed_scene(const Scene& scene, const FrameInputs& inputs);
 
 enum class Pass { composite, airlight, surface };
 
@@ -21,7 +52,8 @@ struct PassTime {
   double seconds = 0.0;
 };
 
-struct Frame {
+// A frame read back to the CPU.
+struct FrameImages {
   Image airlight;                      // L_air, W/(m²·sr)
   Image surface;                       // L_surf·T(d)
   std::vector<PassTime> times;         // per pass, in the order run
@@ -32,8 +64,19 @@ class Method {
 public:
   virtual ~Method() = default;
   virtual void prepare(const Scene& scene) = 0;
-  virtual Frame render(int width, int height) = 0;
+  // Renders a frame of the prepared scene; its images stay where the method
+  // keeps them until read_back(). Throws Failure before prepare().
+  virtual void render_frame(const FrameInputs& inputs) = 0;
+  // GPU methods: renders a frame in the caller's current GL context from the
+  // engine's depth buffer and shadow maps into its textures. Others throw Failure.
+  virtual void render_frame(const FrameInputs& inputs, const EngineFrame& engine);
+  // The last frame: its images (read from the GPU), pass times and counters.
+  virtual FrameImages read_back() = 0;
 };
+
+// Batch use (render, compare, bench): the scene as loaded at width × height,
+// rendered and read back. `method` must have been prepared with `scene`.
+FrameImages render(Method& method, const Scene& scene, int width, int height);
 
 struct MethodInfo {
   std::string name;
@@ -43,12 +86,12 @@ struct MethodInfo {
   std::function<std::unique_ptr<Method>(const Settings&)> create;
 };
 
-// Every registered method, in the order of DESIGN §3.
+// Every registered method, in the order of docs/design.md §3.
 const std::vector<MethodInfo>& registered_methods();
 // Throws InputError("--method", name) for an unknown method.
 const MethodInfo& find_method(const std::string& name);
 
 // L = L_surf·T + L_air, or one of its terms.
-Image select_pass(const Frame& frame, Pass pass);
+Image select_pass(const FrameImages& frame, Pass pass);
 
 }  // namespace airlight

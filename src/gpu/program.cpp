@@ -129,4 +129,20 @@ void set_uniform(const Program& p, const char* name, const std::vector<glm::vec4
   if (!v.empty()) glProgramUniform4fv(p.id(), location(p, name), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
 }
 
+void dispatch_pixels(int width, int height) {
+  glDispatchCompute(static_cast<GLuint>((width + pixel_workgroup - 1) / pixel_workgroup),
+                    static_cast<GLuint>((height + pixel_workgroup - 1) / pixel_workgroup), 1);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+Image read_image(const Texture& texture, int width, int height) {
+  std::vector<glm::vec3> rows(static_cast<size_t>(width) * height);
+  glGetTextureImage(texture.id(), 0, GL_RGB, GL_FLOAT, static_cast<GLsizei>(rows.size() * sizeof(glm::vec3)),
+                    rows.data());
+  Image image(width, height);
+  for (int y = 0; y < height; ++y)  // GL row y is image row height − 1 − y
+    std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(y) * width, width, &image.at(0, height - 1 - y));
+  return image;
+}
+
 }  // namespace airlight::gpu

@@ -5,6 +5,8 @@
 // defines are put in front.
 #include "gpu/gl.hpp"
 
+#include <airlight/image.hpp>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -38,5 +40,16 @@ void set_uniform(const Program& p, const char* name, const glm::vec4& v);
 void set_uniform(const Program& p, const char* name, const glm::mat4& v);
 // A vec4 array uniform, elements 0 .. v.size() − 1.
 void set_uniform(const Program& p, const char* name, const std::vector<glm::vec4>& v);
+
+// local_size_x = local_size_y of every per-pixel compute program.
+inline constexpr int pixel_workgroup = 8;
+
+// Runs the bound compute program over width × height pixels in 8×8 workgroups
+// (local_size_x = local_size_y = 8), then a memory barrier for what reads its output.
+void dispatch_pixels(int width, int height);
+
+// An RGBA32F (or R32F) texture's RGB as an Image, top row first (GL row y is
+// image row height − 1 − y).
+Image read_image(const Texture& texture, int width, int height);
 
 }  // namespace airlight::gpu

@@ -1,8 +1,8 @@
-#include "methods/analytic/analytic_method.hpp"
-
-#include "gpu/gpu_method.hpp"
+#include "methods/kit/gpu_method.hpp"
 #include "gpu/program.hpp"
 #include "optics/gamma.hpp"
+
+#include "methods/kit/registry.hpp"
 
 #include <memory>
 #include <string>
@@ -12,7 +12,7 @@
 namespace airlight::methods {
 namespace {
 
-constexpr GLuint sun_table_unit = gpu::binding::first_free_texture;  // BINDING_SUN_TABLE
+constexpr GLuint sun_table_unit = kit::binding::first_free_texture;  // BINDING_SUN_TABLE
 
 std::vector<SettingSpec> analytic_settings() {
   using T = SettingSpec::Type;
@@ -26,13 +26,13 @@ std::vector<SettingSpec> analytic_settings() {
 
 // One dispatch over the pixels: every pixel sums Γ of every light to its
 // G-buffer distance (analytic.comp.glsl).
-class Analytic final : public gpu::GpuMethod {
+class Analytic final : public kit::GpuMethod {
 public:
   explicit Analytic(const Settings& s) : GpuMethod(s), table_(s.choice("F") == "table") {}
 
 private:
   void prepare_airlight(const Scene&) override {
-    std::string defines = gpu::frame_defines() + "#define BINDING_SUN_TABLE " + std::to_string(sun_table_unit) + "\n";
+    std::string defines = kit::frame_defines() + "#define BINDING_SUN_TABLE " + std::to_string(sun_table_unit) + "\n";
     if (table_) {
       defines += "#define SUN_F_TABLE\n";
       upload_table();
@@ -51,7 +51,7 @@ private:
                         table.texels.data());
   }
 
-  void render_airlight(const gpu::SharedFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
+  void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     gpu::ScopedPass pass(timer, "airlight");
     glUseProgram(program_.id());
     if (table_) glBindTextureUnit(sun_table_unit, table_texture_.id());
@@ -68,8 +68,6 @@ private:
   double closed_forms_ = 0.0;
 };
 
-}  // namespace
-
 MethodInfo analytic_method() {
   return {"analytic", "Sun et al. 2005 via Kingston 4.2",
           "per pixel, the closed-form unoccluded airlight of every light from the eye to the G-buffer distance "
@@ -77,7 +75,11 @@ MethodInfo analytic_method() {
           "Nilsson eq. 2.17), with F(u, v) from a table or integrated in the shader; no volumetric shadows "
           "(occluders only end the view ray), and the medium that fills space only: bounded volumes and gobo "
           "colours are ignored",
-          gpu::gpu_settings(analytic_settings()), [](const Settings& s) { return std::make_unique<Analytic>(s); }};
+          kit::gpu_settings(analytic_settings()), [](const Settings& s) { return std::make_unique<Analytic>(s); }};
 }
+
+}  // namespace
+
+AIRLIGHT_REGISTER_METHOD(4, analytic_method);
 
 }  // namespace airlight::methods

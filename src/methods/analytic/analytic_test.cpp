@@ -6,7 +6,7 @@
 #include "core/metrics.hpp"
 #include "geometry/camera.hpp"
 #include "methods/analytic/analytic_method.hpp"
-#include "methods/raymarch/march_test_support.hpp"
+#include "methods/kit/test_support.hpp"
 #include "reference/reference.hpp"
 
 #include <airlight/method.hpp>

@@ -26,7 +26,7 @@
 // that change exactly, so what the window shares is only the smooth remainder
 // (σs·p, V, extinction). Neighbours whose rays no light reaches (G = 0, w = 0)
 // are left out like those across silhouettes.
-#include "methods/raymarch/march.glsl"
+#include "methods/kit/march.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D gathered;

@@ -7,17 +7,17 @@
 namespace airlight::methods {
 namespace {
 
-constexpr GLuint partial_unit = gpu::binding::first_free_texture;
+constexpr GLuint partial_unit = kit::binding::first_free_texture;
 
 }  // namespace
 
 void GatherPass::prepare() {
   program_ = gpu::make_compute_program("methods/interleaved/gather.comp.glsl",
-                                       gpu::frame_defines() + "#define BINDING_PARTIAL " +
+                                       kit::frame_defines() + "#define BINDING_PARTIAL " +
                                            std::to_string(partial_unit) + "\n");
 }
 
-void GatherPass::run(const gpu::SharedFrame& frame, const gpu::Texture& image) {
+void GatherPass::run(const kit::SceneFrame& frame, const gpu::Texture& image) {
   if (frame.width() != width_ || frame.height() != height_) {
     width_ = frame.width();
     height_ = frame.height();
@@ -32,7 +32,7 @@ void GatherPass::run(const gpu::SharedFrame& frame, const gpu::Texture& image) {
   pass(frame, rows_, image, true);
 }
 
-void GatherPass::pass(const gpu::SharedFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical) {
+void GatherPass::pass(const kit::SceneFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical) {
   gpu::set_uniform(program_, "vertical", vertical ? 1 : 0);
   glBindTextureUnit(partial_unit, from.id());
   glBindImageTexture(0, to.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);

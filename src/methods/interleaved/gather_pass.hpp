@@ -2,7 +2,7 @@
 // Interleaved sampling's separable sum (Tóth 2009 §4.1; gather.comp.glsl): a
 // horizontal then a vertical pass, each adding M consecutive pixels, optionally
 // leaving out neighbours across silhouettes (depth-aware).
-#include "gpu/frame.hpp"
+#include "methods/kit/scene_frame.hpp"
 
 namespace airlight::methods {
 
@@ -10,7 +10,7 @@ struct GatherSettings {
   int block = 4;                 // M
   bool depth_aware = true;
   float depth_threshold = 0.1f;  // relative distance difference that excludes a neighbour
-  bool normalized = false;       // partial sums come divided by the light guide (MarchSettings)
+  bool normalized = false;       // partial sums come divided by the light guide (kit::MarchSettings)
 };
 
 class GatherPass {
@@ -21,11 +21,11 @@ public:
   void prepare();
 
   // Replaces each pixel of `image` (RGBA32F of the frame's size) by the sum over
-  // its M×M window; the frame must be bound (SharedFrame::bind).
-  void run(const gpu::SharedFrame& frame, const gpu::Texture& image);
+  // its M×M window; the frame must be bound (SceneFrame::bind).
+  void run(const kit::SceneFrame& frame, const gpu::Texture& image);
 
 private:
-  void pass(const gpu::SharedFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical);
+  void pass(const kit::SceneFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical);
 
   GatherSettings settings_;
   gpu::Program program_;

@@ -1,8 +1,8 @@
-#include "methods/interleaved/interleaved_method.hpp"
-
-#include "gpu/gpu_method.hpp"
+#include "methods/kit/gpu_method.hpp"
 #include "methods/interleaved/gather_pass.hpp"
-#include "methods/raymarch/march_pass.hpp"
+#include "methods/kit/march_pass.hpp"
+
+#include "methods/kit/registry.hpp"
 
 #include <memory>
 
@@ -11,11 +11,11 @@ namespace {
 
 // The march pass with blocks of M×M pixels (each pixel marches N/M² of the
 // samples), then the gather passes over the same target.
-class Interleaved final : public gpu::GpuMethod {
+class Interleaved final : public kit::GpuMethod {
 public:
   explicit Interleaved(const Settings& s)
       : GpuMethod(s),
-        march_(MarchSettings::from(s, s.integer("block"), normalized(s))),
+        march_(kit::MarchSettings::from(s, s.integer("block"), normalized(s))),
         gather_({s.integer("block"), s.boolean("depth_aware"), static_cast<float>(s.real("depth_threshold")),
                  normalized(s)}) {}
 
@@ -27,7 +27,7 @@ private:
     gather_.prepare();
   }
 
-  void render_airlight(const gpu::SharedFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
+  void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     {
       gpu::ScopedPass pass(timer, "march");
       march_.run(frame, target);
@@ -40,15 +40,13 @@ private:
     return {{"light_samples", march_.light_samples()}};
   }
 
-  MarchPass march_;
+  kit::MarchPass march_;
   GatherPass gather_;
 };
 
-}  // namespace
-
 MethodInfo interleaved_method() {
   using T = SettingSpec::Type;
-  std::vector<SettingSpec> own = march_settings();
+  std::vector<SettingSpec> own = kit::march_settings();
   own.insert(own.end(),
              {{"block", T::integer, 4, 1, 8, {},
                "M: pixel (x, y) marches only the samples k ≡ (x mod M) + M·(y mod M) of the N (mod M²), so "
@@ -68,7 +66,11 @@ MethodInfo interleaved_method() {
           "raymarch with the N samples spread over M×M pixel blocks (interleaved sampling, Keller & "
           "Heidrich 2001) and gathered by a separable sum, normalized by each pixel's unshadowed ∫I/r² and "
           "depth-aware by default",
-          gpu::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<Interleaved>(s); }};
+          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<Interleaved>(s); }};
 }
+
+}  // namespace
+
+AIRLIGHT_REGISTER_METHOD(2, interleaved_method);
 
 }  // namespace airlight::methods

@@ -8,8 +8,8 @@
 #include "gpu/context.hpp"
 #include "methods/interleaved/gather_pass.hpp"
 #include "methods/interleaved/interleaved_method.hpp"
-#include "methods/raymarch/march_pass.hpp"
-#include "methods/raymarch/march_test_support.hpp"
+#include "methods/kit/march_pass.hpp"
+#include "methods/kit/test_support.hpp"
 #include "methods/raymarch/raymarch_method.hpp"
 #include "reference/ray_caster.hpp"
 

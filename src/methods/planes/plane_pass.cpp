@@ -1,7 +1,7 @@
 #include "methods/planes/plane_pass.hpp"
 
 #include "gpu/program.hpp"
-#include "methods/raymarch/noise.hpp"
+#include "methods/kit/noise.hpp"
 #include "reference/ray_caster.hpp"
 
 #include <algorithm>
@@ -10,7 +10,7 @@
 namespace airlight::methods {
 namespace {
 
-constexpr GLuint jitter_unit = gpu::binding::first_free_texture;
+constexpr GLuint jitter_unit = kit::binding::first_free_texture;
 constexpr int max_planes = 8192;  // per light: dz never below 1/8192 of the lit depth
 
 // Two triangles per cell of an n×n lattice over (n + 1)² vertices, row-major.
@@ -60,13 +60,13 @@ PlaneSettings PlaneSettings::from(const Settings& s) {
 }
 
 void PlanePass::prepare(const Scene& scene) {
-  const std::string defines = gpu::frame_defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n";
+  const std::string defines = kit::frame_defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n";
   program_ = gpu::make_program({{GL_VERTEX_SHADER, "methods/planes/planes.vert.glsl"},
                                 {GL_FRAGMENT_SHADER, "methods/planes/planes.frag.glsl"}},
                                defines);
-  const std::vector<float> offsets = settings_.jitter == "blue" ? blue_noise() : white_noise();
-  noise_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32F, noise_size, noise_size);
-  glTextureSubImage2D(noise_.id(), 0, 0, 0, noise_size, noise_size, GL_RED, GL_FLOAT, offsets.data());
+  const std::vector<float> offsets = settings_.jitter == "blue" ? kit::blue_noise() : kit::white_noise();
+  noise_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32F, kit::noise_size, kit::noise_size);
+  glTextureSubImage2D(noise_.id(), 0, 0, 0, kit::noise_size, kit::noise_size, GL_RED, GL_FLOAT, offsets.data());
   const std::vector<GLuint> indices = lattice_indices(std::max(settings_.lattice, 1));
   index_count_ = static_cast<int>(indices.size());
   indices_ = gpu::make_buffer(indices.size() * sizeof(GLuint), indices.data());
@@ -82,18 +82,18 @@ void PlanePass::prepare(const Scene& scene) {
   far_ = scene.camera.far;
   const reference::RayCaster rays(scene);
   volumes_.clear();
-  for (const Light& light : scene.lights) volumes_.push_back(light_volume(light, rays));
+  for (const Light& light : scene.lights) volumes_.push_back(kit::light_bounds(light, rays));
 }
 
-PlanePass::Slabs PlanePass::slabs(const LightVolume& volume) const {
-  const double depth = lit_far_depth(volume, camera_, far_);
+PlanePass::Slabs PlanePass::slabs(const kit::LightBounds& volume) const {
+  const double depth = kit::lit_far_depth(volume, camera_, far_);
   if (!(depth > 0.0)) return {};
   const int count = settings_.spacing > 0.0 ? static_cast<int>(std::ceil(depth / settings_.spacing)) : settings_.planes;
   const int n = std::clamp(count, 1, max_planes);
   return {n, static_cast<float>(depth / n)};
 }
 
-void PlanePass::run(const gpu::SharedFrame& frame, const gpu::Texture& target) {
+void PlanePass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, zero);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
@@ -126,7 +126,7 @@ void PlanePass::run(const gpu::SharedFrame& frame, const gpu::Texture& target) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void PlanePass::draw_light(int light, const LightVolume& volume) {
+void PlanePass::draw_light(int light, const kit::LightBounds& volume) {
   const Slabs s = slabs(volume);
   if (s.count == 0) return;
   const std::vector<glm::vec4> clip = settings_.clip ? volume.clip : std::vector<glm::vec4>{};

@@ -4,8 +4,8 @@
 // drawn as instances of one lattice mesh with the depth test against the
 // G-buffer, clipped to the light's influence volume, blended additively into
 // the RGBA32F airlight target.
-#include "gpu/frame.hpp"
-#include "methods/planes/light_volume.hpp"
+#include "methods/kit/scene_frame.hpp"
+#include "methods/kit/light_bounds.hpp"
 
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
@@ -35,8 +35,8 @@ public:
   // through the scene on the CPU); needs a current context.
   void prepare(const Scene& scene);
 
-  // L_air into `target`; the frame must be bound (SharedFrame::bind).
-  void run(const gpu::SharedFrame& frame, const gpu::Texture& target);
+  // L_air into `target`; the frame must be bound (SceneFrame::bind).
+  void run(const kit::SceneFrame& frame, const gpu::Texture& target);
 
   double planes_drawn() const { return planes_drawn_; }
   // Fragment shader invocations of the last run (the planes' fragments that
@@ -48,14 +48,14 @@ private:
     int count = 0;
     float dz = 0.0f;
   };
-  Slabs slabs(const LightVolume& volume) const;
-  void draw_light(int light, const LightVolume& volume);
+  Slabs slabs(const kit::LightBounds& volume) const;
+  void draw_light(int light, const kit::LightBounds& volume);
 
   PlaneSettings settings_;
   geometry::CameraFrame camera_;
   double far_ = 0.0;
   float cos_edge_ = 1.0f;  // the smallest cos(ray, forward) in the image
-  std::vector<LightVolume> volumes_;
+  std::vector<kit::LightBounds> volumes_;
   gpu::Program program_;
   gpu::Texture noise_;
   gpu::VertexArray mesh_;

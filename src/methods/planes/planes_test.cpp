@@ -3,7 +3,7 @@
 // light's influence volume, jitter, and a scene with every feature.
 #include "core/metrics.hpp"
 #include "methods/planes/planes_method.hpp"
-#include "methods/raymarch/march_test_support.hpp"
+#include "methods/kit/test_support.hpp"
 #include "reference/reference.hpp"
 
 #include <airlight/scene.hpp>

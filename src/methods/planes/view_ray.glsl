@@ -1,7 +1,7 @@
 // The camera ray through normalized device coordinates `ndc`, scaled to unit
 // view depth (dot(ray, forward) = 1): the point at view depth z is eye + z·ray.
-// pixel_ray (frame/scene.glsl) is its direction at a pixel's centre.
-#include "frame/scene.glsl"
+// pixel_ray (methods/kit/scene.glsl) is its direction at a pixel's centre.
+#include "methods/kit/scene.glsl"
 
 vec3 view_ray(vec2 ndc) {
   vec2 plane = ndc * frame_image.z * vec2(frame_image.w, 1.0);

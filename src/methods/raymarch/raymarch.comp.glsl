@@ -11,7 +11,7 @@
 // `normalized`: the partial sums are divided by the pixel's light guide
 // (march.glsl) for interleaved's normalized gather; w says whether any light
 // reaches the ray.
-#include "methods/raymarch/march.glsl"
+#include "methods/kit/march.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D airlight_out;  // accumulated over the dispatches

@@ -3,8 +3,8 @@
 // the mean, every feature of the model is summed, and no configuration produces
 // NaN or Inf.
 #include "core/metrics.hpp"
-#include "methods/raymarch/march_test_support.hpp"
-#include "methods/raymarch/noise.hpp"
+#include "methods/kit/test_support.hpp"
+#include "methods/kit/noise.hpp"
 #include "methods/raymarch/raymarch_method.hpp"
 
 #include <airlight/method.hpp>
@@ -165,8 +165,8 @@ TEST(Raymarch, JitterKeepsTheMean) {
 }
 
 TEST(Raymarch, BlueNoiseIsAStratifiedHighFrequencyTile) {
-  const std::vector<float> blue = blue_noise(), white = white_noise();
-  ASSERT_EQ(blue.size(), size_t(noise_size * noise_size));
+  const std::vector<float> blue = kit::blue_noise(), white = kit::white_noise();
+  ASSERT_EQ(blue.size(), size_t(kit::noise_size * kit::noise_size));
   std::vector<float> sorted = blue;
   std::sort(sorted.begin(), sorted.end());
   for (size_t i = 0; i < sorted.size(); ++i) ASSERT_FLOAT_EQ(sorted[i], (i + 0.5f) / sorted.size());
@@ -174,10 +174,10 @@ TEST(Raymarch, BlueNoiseIsAStratifiedHighFrequencyTile) {
   // blue noise pushes neighbours apart.
   auto neighbour_difference = [](const std::vector<float>& v) {
     double sum = 0.0;
-    for (int y = 0; y < noise_size; ++y)
-      for (int x = 0; x < noise_size; ++x)
-        sum += std::abs(v[y * noise_size + x] - v[y * noise_size + (x + 1) % noise_size]);
-    return sum / (noise_size * noise_size);
+    for (int y = 0; y < kit::noise_size; ++y)
+      for (int x = 0; x < kit::noise_size; ++x)
+        sum += std::abs(v[y * kit::noise_size + x] - v[y * kit::noise_size + (x + 1) % kit::noise_size]);
+    return sum / (kit::noise_size * kit::noise_size);
   };
   std::printf("neighbour |difference|: blue %.3f, white %.3f\n", neighbour_difference(blue),
               neighbour_difference(white));

@@ -1,5 +1,4 @@
-#include "methods/reference/reference_method.hpp"
-
+#include "methods/kit/registry.hpp"
 #include "reference/reference.hpp"
 
 namespace airlight::methods {
@@ -27,8 +26,6 @@ private:
   const Scene* scene_ = nullptr;
 };
 
-}  // namespace
-
 MethodInfo reference_method() {
   using T = SettingSpec::Type;
   return {"reference", "DESIGN §1",
@@ -38,5 +35,9 @@ MethodInfo reference_method() {
             "initial panels per ray: shadow features thinner than 1/min_segments of the ray may be missed"}},
           [](const Settings& s) { return std::make_unique<ReferenceMethod>(s); }};
 }
+
+}  // namespace
+
+AIRLIGHT_REGISTER_METHOD(0, reference_method);
 
 }  // namespace airlight::methods

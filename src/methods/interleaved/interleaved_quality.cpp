@@ -1,0 +1,29 @@
+// interleaved's rows of the quality table (docs/design.md §6), each tolerance beside its reason.
+#include "methods/kit/quality.hpp"
+
+namespace airlight::kit::test {
+namespace {
+
+// clang-format off
+const Case rows[] = {
+  // interleaved (Tóth §4.1): each pixel marches N/16 of the samples; the 4×4 gather
+  // blurs visibility across shadow and silhouette edges, a floor that does not fall with N.
+  {"interleaved", "teapot_spot", {"steps=256"}, 0.25,
+   "uniform steps as raymarch's (the spot's apex) plus the 4×4 blur (measured 0.175)"},
+  {"interleaved", "biri_sphere", {"steps=256"}, 4.5,
+   "uniform steps: the pixels beside the spot's apex dominate, as for raymarch (measured 3.36)"},
+  {"interleaved", "three_lights", {"steps=256"}, 0.35,
+   "uniform steps near the point light, as raymarch (measured 0.25)"},
+  {"interleaved", "teapot_spot", {"steps=256", "sampling=equiangular"}, 0.02,
+   "measured 0.010: the 4×4 gather's blur of the teapot's shadow edges"},
+  {"interleaved", "biri_sphere", {"steps=256", "sampling=equiangular"}, 0.15,
+   "measured 0.096: the 4×4 blur of the sphere's shadow edge beside the bright apex"},
+  {"interleaved", "three_lights", {"steps=256", "sampling=equiangular"}, 0.10,
+   "measured 0.059: the 4×4 blur of the pillars' shadows around the point light"},
+};
+// clang-format on
+
+INSTANTIATE_TEST_SUITE_P(Table, Quality, ::testing::ValuesIn(rows), case_name);
+
+}  // namespace
+}  // namespace airlight::kit::test

@@ -1,0 +1,134 @@
+// Γ(t0 → t1), the unoccluded airlight of one light along a view segment in the
+// medium that fills space: the GLSL twin of optics::gamma (src/optics/gamma.cpp).
+// Bounded volumes and gobos are ignored (closed forms need one homogeneous
+// medium; Γ uses the cone and the beam's box, not the light map's colours).
+// Defining SUN_F_TABLE (and BINDING_SUN_TABLE) makes the isotropic Sun path
+// read F from the SunTable texture; otherwise it integrates in the shader.
+#include "methods/kit/scene.glsl"
+#include "optics/gamma.glsl"
+
+#ifdef SUN_F_TABLE
+layout(binding = BINDING_SUN_TABLE) uniform sampler2D sun_table;
+#endif
+
+bool isotropic_medium() {
+  for (int k = 0; k < scene_counts.z; ++k)
+    if (lobes[k].type != PHASE_ISOTROPIC) return false;
+  return true;
+}
+
+// Sun et al. (Kingston eqs. 36-40) over [a, b] per channel, times the eye's extinction to a.
+vec3 sun_piece(int i, vec3 eye, vec3 dir, float a, float b) {
+  vec3 origin = eye + a * dir, sum;
+  for (int c = 0; c < 3; ++c) {
+#ifdef SUN_F_TABLE
+    float g = sun_airlight_table(sun_table, medium_sigma_s[c], medium_sigma_t[c], lights[i].color[c], origin, dir,
+                                 lights[i].position.xyz, b - a);
+#else
+    float g = sun_airlight_ray(medium_sigma_s[c], medium_sigma_t[c], lights[i].color[c], origin, dir,
+                               lights[i].position.xyz, b - a);
+#endif
+    sum[c] = exp(-medium_sigma_t[c] * a) * g;
+  }
+  return sum;
+}
+
+vec3 nilsson_piece(int i, vec3 eye, vec3 dir, float a, float b) {
+  vec3 sum;
+  for (int c = 0; c < 3; ++c)
+    sum[c] = nilsson_airlight(medium_sigma_s[c], lights[i].color[c], light_model_coeffs.x, light_model_coeffs.y, eye,
+                              dir, lights[i].position.xyz, a, b);
+  return sum;
+}
+
+// gamma.cpp biri_angular: ∫ p(cos θ)·cone·exp(-σt(x + r))/r² dx over [t0, t1],
+// Biri's angle φ through s = asinh((x - xs)/h): dx/r² = ds/(h cosh s), cos θ = -tanh s.
+vec3 biri_angular(int i, vec3 eye, vec3 dir, float t0, float t1) {
+  vec3 light = lights[i].position.xyz, delta = light - eye;
+  float xs = dot(delta, dir);
+  vec3 off = delta - xs * dir;
+  float h_true = length(off), h = max(h_true, MIN_LIGHT_DISTANCE);
+  vec3 normal = h_true > 0.0 ? off / h_true : normalize(cross(dir, vec3(dir.y, dir.z, -dir.x)));
+  bool smooth_edge = lights[i].meta.x == LIGHT_SPOT && lights[i].direction.w > 0.0;
+  vec3 sigma_t = medium_sigma_t.rgb;
+  float fast = max(sigma_t.r, max(sigma_t.g, sigma_t.b)), slow = min(sigma_t.r, min(sigma_t.g, sigma_t.b));
+  float s0 = stable_asinh((t0 - xs) / h), s1 = stable_asinh((t1 - xs) / h);
+  float e0 = h * exp(s0);
+  vec3 sum = vec3(0.0);
+  float a = s0;
+  for (int panel = 0; panel < BIRI_MAX_PANELS && a < s1; ++panel) {
+    float grow = fast > 0.0 ? log1p_nonneg(BIRI_PANEL_GROWTH / (fast * h * exp(a))) : BIRI_MAX_PANEL;
+    float b = min(s1, a + min(BIRI_MAX_PANEL, grow));
+    for (int k = 0; k < 8; ++k) {
+      float s = 0.5 * (a + b) + 0.5 * (b - a) * (k < 4 ? -BIRI_GL_X[k] : BIRI_GL_X[k - 4]);
+      float w = 0.5 * (b - a) * BIRI_GL_W[k % 4];
+      float f = phase_sum(0, scene_counts.z, -tanh(s));
+      if (smooth_edge)
+        f *= spot_cone(lights[i].direction.xyz, lights[i].position.w, lights[i].direction.w,
+                       normalize(tanh(s) * dir - normal / cosh(s)));
+      sum += w * f / cosh(s) * exp(-sigma_t * (e0 * expm1_nonneg(s - s0)));
+    }
+    if (slow * e0 * expm1_nonneg(b - s0) > BIRI_TAIL_GROWTH) break;
+    a = b;
+  }
+  return sum * exp(-sigma_t * (t0 + length(light - (eye + t0 * dir)))) / h;
+}
+
+// One lit piece of a point or spot light (gamma.cpp local_piece); 0 if empty.
+vec3 local_piece(int i, vec3 eye, vec3 dir, float a, float b) {
+  if (!(b > a)) return vec3(0.0);
+  if (simplified_model()) return nilsson_piece(i, eye, dir, a, b);
+  bool smooth_edge = lights[i].meta.x == LIGHT_SPOT && lights[i].direction.w > 0.0;
+  if (isotropic_medium() && !smooth_edge) return sun_piece(i, eye, dir, a, b);
+  return medium_sigma_s.rgb * lights[i].color.rgb * biri_angular(i, eye, dir, a, b);
+}
+
+// A spot: its cone_intervals (hard cut at the cone), each cut again at the
+// inner cone's ends under a smooth edge (gamma.cpp spot_gamma): those pieces
+// lie inside the outer one, in ascending order.
+vec3 spot_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
+  vec3 apex = lights[i].position.xyz, axis = lights[i].direction.xyz;
+  float cone = lights[i].position.w, inner = cone - lights[i].direction.w;
+  bool cut = lights[i].direction.w > 0.0 && inner > 0.0 && !simplified_model();
+  ConeIntervals lit = cone_intervals(apex, axis, cone, eye, dir, t0, t1);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < lit.count; ++k) {
+    float start = lit.piece[k].x, end = lit.piece[k].y;
+    ConeIntervals core = ConeIntervals(0, vec2[2](vec2(0.0), vec2(0.0)));
+    if (cut) core = cone_intervals(apex, axis, inner, eye, dir, start, end);
+    for (int j = 0; j < core.count; ++j) {
+      sum += local_piece(i, eye, dir, start, core.piece[j].x) + local_piece(i, eye, dir, core.piece[j].x, core.piece[j].y);
+      start = core.piece[j].y;
+    }
+    sum += local_piece(i, eye, dir, start, end);
+  }
+  return sum;
+}
+
+// gamma.cpp directional: the exact exponential form, over the beam's box if any.
+vec3 directional_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
+  vec3 travel = lights[i].direction.xyz;
+  bool simplified = simplified_model();
+  float p = simplified ? INV_4PI : phase_sum(0, scene_counts.z, dot(-travel, dir));
+  float along = 0.0, s_start = 0.0;
+  if (has_beam(i)) {
+    Beam beam = light_beam(i);
+    vec2 inside = beam_interval(beam, eye, dir, t0, t1);
+    if (!(inside.x < inside.y)) return vec3(0.0);
+    t0 = inside.x;
+    t1 = inside.y;
+    along = dot(dir, travel);
+    s_start = max(beam_depth(beam, eye + t0 * dir), 0.0);
+  }
+  vec3 sigma_t = simplified ? vec3(0.0) : medium_sigma_t.rgb;
+  return medium_sigma_s.rgb * p * lights[i].color.rgb * exp(-sigma_t * (t0 + s_start)) *
+         exponential_length(sigma_t * (1.0 + along), t1 - t0);
+}
+
+// Γ of light i along eye + t·dir (unit dir) over [t0, t1]: the entry point of
+// the `analytic` method.
+vec3 closed_form_airlight(int i, vec3 eye, vec3 dir, float t0, float t1) {
+  if (lights[i].meta.x == LIGHT_DIRECTIONAL) return directional_gamma(i, eye, dir, t0, t1);
+  if (lights[i].meta.x == LIGHT_POINT) return local_piece(i, eye, dir, t0, t1);
+  return spot_gamma(i, eye, dir, t0, t1);
+}

@@ -1,0 +1,155 @@
+// The march shared by raymarch and interleaved (Tóth 2009 §3.1–4.1, Kingston
+// 4.1): Σ_k w_k·Σ_lights V·inscatter at samples x_k along a view ray, over a
+// subset of the N sample indices (all of them for raymarch; k ≡ q mod M² for
+// interleaved's pixel q).
+//
+// Marched in view (world) space, as Kingston's raymarchViewSpaceAirlight: the
+// lights of one march share its sample positions and the eye's optical depth;
+// Tóth's light space only saves the subtraction x − light.
+//
+// Sample k of N sits at u = (k + offset)/N of its interval: offset 0.5 puts it
+// at the middle of its step (Tóth's eq. 1 sums N + 1 end-point terms, error
+// ~1/N; the midpoint rule's is ~1/N², seeds README), a per-pixel noise offset
+// (Kingston §5.1.1) turns the steps' banding into noise. u maps to the ray by
+//  - uniform steps (the documents' method): x = a + u·(b − a), w = (b − a)/N;
+//  - equiangular steps (Kulla & Fajardo 2012, "Importance sampling techniques
+//    for path tracing in participating media", §3, here deterministic): u is
+//    uniform in the angle θ seen from the light's foot point on the ray, at
+//    distance h: x = foot + h·tan θ, w = dθ·h/cos²θ. Since r² = h²/cos²θ, the
+//    integrand in θ is I/h times smooth factors: the 1/r² peak of a ray passing
+//    near a point or spot light, narrower than a uniform step, is integrated
+//    exactly. Each such light needs its own foot point, hence its own march;
+//    directional lights (no 1/r²) keep uniform steps.
+#include "methods/kit/scene.glsl"
+
+const int SAMPLING_UNIFORM = 0;      // the `sampling` setting's choices, in order
+const int SAMPLING_EQUIANGULAR = 1;
+
+// Which of the N sample indices an invocation evaluates: k = first, first +
+// stride, … below end.
+struct SampleRange {
+  int count;  // N
+  int first;
+  int stride;
+  int end;
+};
+
+// The interval [a, b] along the view ray that one march covers, and how u maps
+// onto it: h = 0 uniform steps, h > 0 equiangular about the light's foot point.
+struct Segment {
+  float a, b;
+  float foot;  // distance along the ray of the point nearest the light
+  float h;     // the light's distance from the ray's line
+  float theta_a, theta_b;  // atan((a − foot)/h), atan((b − foot)/h)
+};
+
+Segment uniform_segment(float a, float b) { return Segment(a, b, 0.0, 0.0, 0.0, 0.0); }
+
+// Equiangular steps over [a, b] (b > a) of the ray eye + t·dir for a light at
+// `light`. h = |Δ − foot·dir|, not sqrt(|Δ|² − foot²), which cancels for a light
+// near the ray (seeds README, Nilsson eq. 2.16). A ray through the light has
+// h = 0 and ∫dx/r² diverges: h is kept above 1e-4 of the interval, which
+// still maps θ onto [a, b] exactly (any h > 0 does), only less peaked.
+Segment equiangular_segment(float a, float b, vec3 eye, vec3 dir, vec3 light) {
+  vec3 delta = light - eye;
+  float foot = dot(delta, dir);
+  float h = max(length(delta - foot * dir), max(1e-4 * (b - a), MIN_LIGHT_DISTANCE));
+  return Segment(a, b, foot, h, atan2_accurate(a - foot, h), atan2_accurate(b - foot, h));
+}
+
+// Distance along the ray (x) and weight (y) of the sample at u ∈ (0, 1) of n.
+vec2 segment_sample(Segment s, float u, int n) {
+  if (s.h == 0.0) return vec2(mix(s.a, s.b, u), (s.b - s.a) / float(n));
+  float y = s.h * tan(mix(s.theta_a, s.theta_b, u));
+  return vec2(s.foot + y, (s.theta_b - s.theta_a) / float(n) * (s.h + y * y / s.h));  // h/cos²θ = h + y²/h
+}
+
+// ---- marching -----------------------------------------------------------------
+
+const int ALL_LIGHTS = -1;      // `group` of march_segment: every light,
+const int UNBOUNDED_SUNS = -2;  // the directional lights without a beam, or one light (>= 0)
+
+bool unbounded_sun(int i) { return lights[i].meta.x == LIGHT_DIRECTIONAL && !has_beam(i); }
+
+bool in_group(int i, int group) {
+  return group == ALL_LIGHTS || (group == UNBOUNDED_SUNS ? unbounded_sun(i) : i == group);
+}
+
+bool any_unbounded_sun() {
+  for (int i = 0; i < light_count(); ++i)
+    if (unbounded_sun(i)) return true;
+  return false;
+}
+
+// Σ over the range's samples k of w_k·Σ_{lights i in group} V_i·inscatter_i(x_k)
+// (Tóth eq. 1, Kingston eq. 26) on segment s of the ray eye + t·dir.
+vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) {
+  if (!(s.b > s.a)) return vec3(0.0);
+  int lo = group >= 0 ? group : 0;
+  int hi = group >= 0 ? group + 1 : light_count();
+  vec3 eye = frame_eye.xyz;
+  vec3 sum = vec3(0.0);
+  for (int k = r.first; k < r.end; k += r.stride) {
+    vec2 t = segment_sample(s, (float(k) + offset) / float(r.count), r.count);
+    vec3 x = eye + t.x * dir;
+    vec3 eye_depth = eye_leg_depth(eye, x);
+    vec3 e = vec3(0.0);
+    for (int i = lo; i < hi; ++i) {
+      if (!in_group(i, group)) continue;
+      vec3 c = inscatter(i, x, dir, eye_depth);
+      if (c != vec3(0.0)) e += c * shadow_visibility(i, x);
+    }
+    sum += e * t.y;
+  }
+  return sum;
+}
+
+// L_air along the unit view ray `dir` up to distance d, over the range's samples.
+// Equiangular: one march per point or spot light over the part of [0, d] it
+// lights, one uniform march per beam over its box, and one uniform march for
+// the directional lights without a beam.
+vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset, int sampling) {
+  if (sampling == SAMPLING_UNIFORM) return march_segment(dir, uniform_segment(0.0, d), r, offset, ALL_LIGHTS);
+  vec3 sum = vec3(0.0);
+  if (any_unbounded_sun()) sum += march_segment(dir, uniform_segment(0.0, d), r, offset, UNBOUNDED_SUNS);
+  vec3 eye = frame_eye.xyz;
+  for (int i = 0; i < light_count(); ++i) {
+    if (unbounded_sun(i)) continue;
+    vec2 lit = lit_interval(i, eye, dir, 0.0, d);
+    if (!(lit.y > lit.x)) continue;
+    Segment s = has_beam(i) ? uniform_segment(lit.x, lit.y)
+                            : equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position.xyz);
+    sum += march_segment(dir, s, r, offset, i);
+  }
+  return sum;
+}
+
+// ---- the guide of interleaved's normalized gather -------------------------------
+
+// Per channel, Σ over point and spot lights of I·∫dx/r² over the part of [0, d]
+// each lights (Δθ/h: exact, as in equiangular_segment), plus Σ over directional
+// lights of E times the length of [0, d] they light: L_air without σs·p, V, gobo, smooth edge and extinction. It
+// carries what changes fastest from pixel to pixel — the 1/h peak next to a
+// light, a cone's edge, the length of the ray — and is 0 where no light reaches.
+vec3 light_guide(vec3 dir, float d) {
+  vec3 eye = frame_eye.xyz;
+  vec3 guide = vec3(0.0);
+  for (int i = 0; i < light_count(); ++i) {
+    vec2 lit = lit_interval(i, eye, dir, 0.0, d);
+    if (!(lit.y > lit.x)) continue;
+    if (lights[i].meta.x == LIGHT_DIRECTIONAL) {
+      guide += lights[i].color.rgb * (lit.y - lit.x);
+      continue;
+    }
+    Segment s = equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position.xyz);
+    guide += lights[i].color.rgb * ((s.theta_b - s.theta_a) / s.h);
+  }
+  return guide;
+}
+
+// A pixel's sum divided by its guide per channel (0 where the guide is), and in
+// w whether any light reaches its ray (1) or not (0).
+vec4 guided(vec3 sum, vec3 guide) {
+  bvec3 lit = greaterThan(guide, vec3(0.0));
+  return vec4(mix(vec3(0.0), sum / max(guide, vec3(1e-30)), lit), any(lit) ? 1.0 : 0.0);
+}

@@ -1,0 +1,48 @@
+#pragma once
+// The march pass shared by raymarch and interleaved (raymarch.comp.glsl): its
+// settings, its program and noise texture, and its dispatches.
+#include "methods/kit/scene_frame.hpp"
+
+#include <airlight/settings.hpp>
+#include <string>
+#include <vector>
+
+namespace airlight::kit {
+
+// steps, jitter and sampling: the march's settings, common to both methods.
+std::vector<SettingSpec> march_settings();
+
+struct MarchSettings {
+  int steps = 64;                     // N
+  std::string jitter = "none";        // none | white | blue
+  std::string sampling = "uniform";   // uniform | equiangular
+  int block = 1;                      // M: pixel q marches the samples k ≡ q (mod M²)
+  bool normalized = false;            // divide each pixel's sum by its light guide (march.glsl)
+
+  // From the method's settings (those of march_settings()), with block M.
+  static MarchSettings from(const Settings& settings, int block = 1, bool normalized = false);
+};
+
+class MarchPass {
+public:
+  explicit MarchPass(MarchSettings settings) : settings_(std::move(settings)) {}
+
+  // Compiles the program and uploads the noise tile; needs a current context.
+  void prepare();
+
+  // Writes each pixel's sum over its own samples into `target` (RGBA32F of the
+  // frame's size; w = 1, or when normalized whether a light reaches the ray);
+  // the frame must be bound (SceneFrame::bind).
+  void run(const kit::SceneFrame& frame, const gpu::Texture& target);
+
+  // Light samples evaluated by the last run (pixels × samples per pixel × lights).
+  double light_samples() const { return light_samples_; }
+
+private:
+  MarchSettings settings_;
+  gpu::Program program_;
+  gpu::Texture noise_;
+  double light_samples_ = 0.0;
+};
+
+}  // namespace airlight::kit

@@ -1,0 +1,139 @@
+#pragma once
+// The shared frame (DESIGN §3 "the same shared inputs"): what every GPU method
+// receives — the scene uploaded once (meshes, lights, volumes, phase lobes,
+// gobos), and per frame a G-buffer (eye distance, normals, albedo), one shadow
+// map per light and the surface term L_surf·T(d) (the reference's surface pass,
+// src/reference/reference.cpp, on the GPU). Shaders reach it all through
+// src/methods/kit/scene.glsl at the binding points below.
+//
+// Pixels follow geometry::primary_ray (DESIGN §5): GL's bottom-left origin, so
+// GL row y is image row H−1−y; read_image() flips back to top row first.
+#include "gpu/gl.hpp"
+#include "gpu/timer.hpp"
+
+#include <airlight/image.hpp>
+#include <airlight/scene.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+#include <string>
+#include <vector>
+
+namespace airlight::kit {
+
+using gpu::Buffer;
+using gpu::Framebuffer;
+using gpu::PassTimer;
+using gpu::Program;
+using gpu::Texture;
+using gpu::VertexArray;
+
+// Binding points of the frame's buffers and textures, shared with GLSL through
+// frame_defines() (scene.glsl uses the BINDING_* macros). Methods use image unit
+// 0 for their output and texture units / storage bindings from the first_free_*.
+namespace binding {
+inline constexpr GLuint frame_block = 0;     // uniform block FrameBlock (std140)
+inline constexpr GLuint lights = 0;          // SSBO SceneLight[] (std430)
+inline constexpr GLuint volumes = 1;         // SSBO SceneVolume[]
+inline constexpr GLuint lobes = 2;           // SSBO PhaseLobe[] (medium's, then each volume's)
+inline constexpr GLuint face_normals = 3;    // SSBO vec4[] per triangle (G-buffer pass only)
+inline constexpr GLuint first_free_storage = 8;
+inline constexpr GLuint distance = 0;        // sampler2D R32F: eye distance along the pixel ray
+inline constexpr GLuint normal = 1;          // sampler2D RGBA32F: shading normal, facing the eye
+inline constexpr GLuint geometric_normal = 2; // sampler2D RGBA32F: triangle normal, facing the eye
+inline constexpr GLuint albedo = 3;          // sampler2D RGBA32F: rgb albedo, a = 1 where a surface is hit
+inline constexpr GLuint gobos = 4;           // sampler2DArray RGBA32F, one layer per gobo
+inline constexpr GLuint shadow_maps = 5;     // sampler2DArray R32F, one layer per 2D shadow map
+inline constexpr GLuint shadow_cubes = 6;    // samplerCubeArray R32F, one cube per point / wide spot
+inline constexpr GLuint first_free_texture = 8;
+}  // namespace binding
+
+// "#define BINDING_… n" for every binding point: prepend to a program's defines.
+std::string frame_defines();
+
+struct FrameSettings {
+  int shadow_resolution = 1024;  // texels per side of each shadow map (and cube face)
+  float shadow_bias = 1.0f;      // in shadow-map texels at the point (see scene.glsl)
+};
+
+// Half-angle from which a spot light gets a cube map instead of a 2D map: a 2D
+// map of field 2·cone has texels tan(cone) times coarser at its centre than a cube
+// face (90°); at 60° that is 1.7×, and it diverges toward 90°.
+inline constexpr float wide_spot_deg = 60.0f;
+
+class SceneFrame {
+public:
+  // Uploads the scene; needs a current GL context. Gobos of different sizes are
+  // resampled (bilinearly, by optics::sample_gobo) to the largest one's size so
+  // that they share one texture array; same-sized gobos are uploaded exactly.
+  void prepare(const Scene& scene);
+
+  // G-buffer ("gbuffer"), shadow maps ("shadow") and surface shading ("surface"),
+  // each timed under that name.
+  void render(int width, int height, const FrameSettings& settings, PassTimer& timer);
+
+  // L = surface + airlight into composite_target(), timed as "composite";
+  // `airlight` is RGBA32F of the frame's size. (Not run by GpuMethod::render:
+  // for the viewer, which shows L on screen.)
+  void composite(const Texture& airlight, PassTimer& timer);
+
+  // Binds the frame block, the scene SSBOs and the textures to binding::*.
+  void bind() const;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  int light_count() const { return light_count_; }
+  const Texture& distance() const { return distance_; }
+  // DEPTH_COMPONENT32F of the G-buffer pass (cleared to 1 where no surface is
+  // hit), for methods that rasterize with the depth test against the scene.
+  const Texture& depth() const { return depth_; }
+  const Texture& normal() const { return normal_; }
+  const Texture& albedo() const { return albedo_; }
+  const Texture& surface() const { return surface_; }
+  const Texture& composite_target() const { return composite_; }
+
+private:
+  struct Programs {
+    Program gbuffer, background, shadow, surface, composite;
+  };
+  struct ShadowLayout {  // how many 2D maps and cube maps the lights use
+    int maps = 0, cubes = 0;
+  };
+  struct ShadowDraw {  // one 2D map or one cube face of a light
+    int light = 0;
+    bool cube = false;
+    int layer = 0;  // array layer (2D), or 6·cube + face
+    glm::mat4 matrix{1.0f};
+  };
+
+  void upload_meshes(const Scene& scene);
+  void upload_media(const Scene& scene);
+  void upload_lights(const Scene& scene);
+  void upload_gobos(const Scene& scene);
+  void resize(int width, int height);
+  void allocate_shadow_maps(int resolution);
+  void update_frame_block(const FrameSettings& settings);
+  void draw_gbuffer();
+  void draw_shadow_maps();
+  void draw_shadow_layer(const ShadowDraw& draw);
+  void shade_surfaces();
+
+  Programs programs_;
+  Camera camera_;
+  LightModel light_model_;
+  std::vector<ShadowDraw> shadow_draws_;
+  ShadowLayout shadow_layout_;
+  int light_count_ = 0, volume_count_ = 0, medium_lobes_ = 0;
+  glm::vec4 medium_sigma_s_{0.0f}, medium_sigma_t_{0.0f}, ambient_{0.0f};
+  int index_count_ = 0;
+  int width_ = 0, height_ = 0, shadow_resolution_ = 0;
+
+  VertexArray vertex_array_;
+  Buffer vertices_, indices_, face_normals_;
+  Buffer frame_block_, lights_, volumes_, lobes_;
+  Texture gobos_;
+  Texture distance_, normal_, geometric_normal_, albedo_, depth_, surface_, composite_;
+  Framebuffer gbuffer_fbo_, shadow_fbo_;
+  Texture shadow_maps_, shadow_cubes_, shadow_depth_;
+};
+
+}  // namespace airlight::kit
