@@ -11,6 +11,7 @@
 #include <airlight/image.hpp>
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
+#include <airlight/timing.hpp>
 #include <functional>
 #include <glm/mat4x4.hpp>
 #include <memory>
@@ -46,11 +47,6 @@ FrameInputs frame_inputs(const Scene& scene, int width, int height);
 Scene posed_scene(const Scene& scene, const FrameInputs& inputs);
 
 enum class Pass { composite, airlight, surface };
-
-struct PassTime {
-  std::string pass;
-  double seconds = 0.0;
-};
 
 // A frame read back to the CPU.
 struct FrameImages {

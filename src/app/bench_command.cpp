@@ -176,16 +176,16 @@ void add_pass_times(const std::vector<PassTime>& times,
 
 // Renders W warm-up frames and F timed ones into `m` (times, GPU memory of the
 // first frame over `gpu_before`); returns the last frame.
-Frame time_frames(Method& method, Size size, int warmup, int frames, double gpu_before, Measurement* m) {
+FrameImages time_frames(Method& method, const Scene& scene, Size size, int warmup, int frames, double gpu_before, Measurement* m) {
   Progress progress(m->scene + " " + std::to_string(size.width) + "x" + std::to_string(size.height) + " " +
                         m->method + " " + m->settings,
                     warmup + frames);
   std::vector<double> frame_s;
   std::vector<std::pair<std::string, std::vector<double>>> pass_s;
-  Frame frame;
+  FrameImages frame;
   for (int i = 0; i < warmup + frames; ++i) {
     const auto start = std::chrono::steady_clock::now();
-    frame = method.render(size.width, size.height);
+    frame = render(method, scene, size.width, size.height);
     const double seconds = seconds_since(start);
     if (i == 0) m->gpu_mib = (static_cast<double>(gpu::allocated_bytes()) - gpu_before) / (1 << 20);
     progress.advance();
@@ -214,7 +214,7 @@ Measurement measure(const Variant& variant, const Scene& scene, Size size, const
   const double gpu_before = static_cast<double>(gpu::allocated_bytes());
   auto method = variant.method->create(variant.settings);
   method->prepare(scene);
-  const Frame last = time_frames(*method, size, is_reference ? 0 : o.warmup, m.frames, gpu_before, &m);
+  const FrameImages last = time_frames(*method, scene, size, is_reference ? 0 : o.warmup, m.frames, gpu_before, &m);
   m.peak_rss_mib = peak_rss_mib();
   const ImageError error = compare_images(last.airlight, reference);
   m.rel_rmse = error.rel_rmse;

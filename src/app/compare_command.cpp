@@ -116,7 +116,7 @@ std::string changed_settings(const MethodInfo& info, const Settings& settings) {
 
 Result reference_result(const Scene& scene, Size size, Pass pass, const fs::path& cache_dir) {
   const std::string key = reference_key(scene, size.width, size.height);
-  ReferenceFrame frame = cached_reference(scene, size.width, size.height, cache_dir);
+  CachedReference frame = cached_reference(scene, size.width, size.height, cache_dir);
   std::fprintf(stderr, "compare: reference %s %s (key %s)\n",
                frame.cached ? "read from the cache" : "rendered into the cache", cache_dir.c_str(), key.c_str());
   Result r;
@@ -126,7 +126,7 @@ Result reference_result(const Scene& scene, Size size, Pass pass, const fs::path
   r.note = frame.cached ? "cached" : "";
   r.render_s = frame.seconds;
   r.cached = frame.cached;
-  r.image = select_pass(Frame{std::move(frame.airlight), std::move(frame.surface), {}, {}}, pass);
+  r.image = select_pass(FrameImages{std::move(frame.airlight), std::move(frame.surface), {}, {}}, pass);
   return r;
 }
 
@@ -140,7 +140,7 @@ Result method_result(const Entry& entry, const Scene& scene, Size size, Pass pas
   method->prepare(scene);
   r.prepare_s = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  r.image = select_pass(method->render(size.width, size.height), pass);
+  r.image = select_pass(render(*method, scene, size.width, size.height), pass);
   r.render_s = seconds_since(start);
   return r;
 }

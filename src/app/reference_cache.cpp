@@ -141,7 +141,7 @@ void store_image(const Image& image, const fs::path& target) {
 }
 
 // The JSON is written last, so its presence means both images are complete.
-void store(const ReferenceFrame& frame, const Entry& e) {
+void store(const CachedReference& frame, const Entry& e) {
   store_image(frame.airlight, e.airlight);
   store_image(frame.surface, e.surface);
   const fs::path temp = temp_beside(e.info);
@@ -151,11 +151,11 @@ void store(const ReferenceFrame& frame, const Entry& e) {
 }
 
 // The cached frame, or none when absent, unreadable or of another size.
-std::optional<ReferenceFrame> load(const Entry& e, int width, int height) {
+std::optional<CachedReference> load(const Entry& e, int width, int height) {
   std::ifstream info(e.info);
   if (!info) return std::nullopt;
   try {
-    ReferenceFrame frame{read_image(e.airlight), read_image(e.surface),
+    CachedReference frame{read_image(e.airlight), read_image(e.surface),
                          nlohmann::json::parse(info).at("seconds").get<double>(), true};
     const bool sized = frame.airlight.width == width && frame.airlight.height == height &&
                        frame.surface.width == width && frame.surface.height == height;
@@ -166,9 +166,9 @@ std::optional<ReferenceFrame> load(const Entry& e, int width, int height) {
   return std::nullopt;
 }
 
-ReferenceFrame render_reference(const Scene& scene, int width, int height) {
+CachedReference render_reference(const Scene& scene, int width, int height) {
   const auto start = std::chrono::steady_clock::now();
-  reference::Frame frame = reference::render(scene, width, height);
+  reference::Images frame = reference::render(scene, width, height);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return {std::move(frame.airlight), std::move(frame.surface), seconds, false};
 }
@@ -198,13 +198,13 @@ std::string reference_key(const Scene& scene, int width, int height) {
   return hex;
 }
 
-ReferenceFrame cached_reference(const Scene& scene, int width, int height, const fs::path& cache_dir) {
+CachedReference cached_reference(const Scene& scene, int width, int height, const fs::path& cache_dir) {
   const Entry e = entry(cache_dir, reference_key(scene, width, height));
   if (auto frame = load(e, width, height)) return *frame;
   std::error_code ec;
   fs::create_directories(cache_dir, ec);
   if (ec) throw Failure("cannot create the reference cache " + cache_dir.string() + ": " + ec.message());
-  ReferenceFrame frame = render_reference(scene, width, height);
+  CachedReference frame = render_reference(scene, width, height);
   store(frame, e);
   return frame;
 }

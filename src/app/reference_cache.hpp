@@ -19,7 +19,7 @@ std::filesystem::path default_cache_dir();
 // reference's settings (reference::Settings defaults).
 std::string reference_key(const Scene& scene, int width, int height);
 
-struct ReferenceFrame {
+struct CachedReference {
   Image airlight, surface;
   double seconds = 0.0;  // the reference's render time when it was made
   bool cached = false;   // read from the cache rather than rendered now
@@ -28,6 +28,6 @@ struct ReferenceFrame {
 // The reference's airlight and surface passes for the scene at that size, from
 // `cache_dir` when present, else rendered and stored there (PFM files named by
 // reference_key). Throws Failure when the directory cannot be written.
-ReferenceFrame cached_reference(const Scene& scene, int width, int height, const std::filesystem::path& cache_dir);
+CachedReference cached_reference(const Scene& scene, int width, int height, const std::filesystem::path& cache_dir);
 
 }  // namespace airlight::app

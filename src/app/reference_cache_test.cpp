@@ -43,9 +43,9 @@ fs::path fresh_dir(const std::string& name) {
 TEST(ReferenceCache, SecondCallReadsTheCache) {
   const fs::path dir = fresh_dir("airlight_reference_cache_test");
   const Scene scene = spot_over_floor();
-  const ReferenceFrame first = cached_reference(scene, 16, 12, dir);
+  const CachedReference first = cached_reference(scene, 16, 12, dir);
   EXPECT_FALSE(first.cached);
-  const ReferenceFrame second = cached_reference(scene, 16, 12, dir);
+  const CachedReference second = cached_reference(scene, 16, 12, dir);
   EXPECT_TRUE(second.cached);
   EXPECT_EQ(second.seconds, first.seconds);
   EXPECT_EQ(second.airlight.pixels, first.airlight.pixels);

@@ -52,7 +52,7 @@ nlohmann::json image_stats(const Image& image, const std::string& method) {
   return {{"min", rgb(lo)}, {"mean", rgb(mean)}, {"max", rgb(hi)}};
 }
 
-void write_report(const RenderOptions& o, const Scene& scene, const Settings& settings, const Frame& frame,
+void write_report(const RenderOptions& o, const Scene& scene, const Settings& settings, const FrameImages& frame,
                   const nlohmann::json& output, double prepare_s, double render_s) {
   nlohmann::json passes = nlohmann::json::array(), stats = nlohmann::json::object();
   for (const auto& t : frame.times) passes.push_back({{"pass", t.pass}, {"seconds", t.seconds}});
@@ -83,7 +83,7 @@ void render(const RenderOptions& o) {
   method->prepare(scene);
   const double prepare_s = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  const Frame frame = method->render(size.width, size.height);
+  const FrameImages frame = airlight::render(*method, scene, size.width, size.height);
   const double render_s = seconds_since(start);
   const Image image = select_pass(frame, parse_pass(o.pass));
   const nlohmann::json output = image_stats(image, o.method);

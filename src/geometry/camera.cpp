@@ -22,14 +22,14 @@ glm::dvec3 frame_up_hint(const glm::dvec3& forward, const glm::dvec3& up) {
 
 // Distance to a plane perpendicular to the view axis at view depth `depth`.
 double plane_distance(const Camera& camera, const glm::dvec3& dir, double depth) {
-  const double cos_axis = glm::dot(dir, camera_frame(camera).forward);
+  const double cos_axis = glm::dot(dir, camera_basis(camera).forward);
   return cos_axis > 0.0 ? depth / cos_axis : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
 
-CameraFrame camera_frame(const Camera& camera) {
-  CameraFrame frame;
+CameraBasis camera_basis(const Camera& camera) {
+  CameraBasis frame;
   frame.position = glm::dvec3(camera.position);
   const glm::dvec3 view = glm::dvec3(camera.look_at) - frame.position;
   if (!(glm::length(view) > 0.0)) throw Failure("camera: position and look_at coincide");
@@ -41,7 +41,7 @@ CameraFrame camera_frame(const Camera& camera) {
 }
 
 optics::Ray primary_ray(const Camera& camera, int width, int height, double px, double py) {
-  const CameraFrame frame = camera_frame(camera);
+  const CameraBasis frame = camera_basis(camera);
   const double aspect = static_cast<double>(width) / height;
   // Image-plane coordinates at unit distance: x right, y up (py grows downward).
   const double x = (2.0 * px / width - 1.0) * frame.tan_half_fov_y * aspect;
@@ -58,7 +58,7 @@ double near_distance(const Camera& camera, const glm::dvec3& dir) {
 }
 
 double view_depth(const Camera& camera, const glm::dvec3& dir, double t) {
-  return t * glm::dot(dir, camera_frame(camera).forward);
+  return t * glm::dot(dir, camera_basis(camera).forward);
 }
 
 }  // namespace airlight::geometry

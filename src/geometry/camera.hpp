@@ -10,7 +10,7 @@
 namespace airlight::geometry {
 
 // The camera's orthonormal frame in world space.
-struct CameraFrame {
+struct CameraBasis {
   glm::dvec3 position{0.0};
   glm::dvec3 forward{0, 0, -1}, right{1, 0, 0}, up{0, 1, 0};
   double tan_half_fov_y = 1.0;
@@ -18,7 +18,7 @@ struct CameraFrame {
 
 // Throws airlight::Failure when position == look_at. When `up` is parallel to
 // the view direction, world +z (or +x if that is parallel too) orients the frame.
-CameraFrame camera_frame(const Camera& camera);
+CameraBasis camera_basis(const Camera& camera);
 
 // The ray through image position (px, py) in pixels of a width × height image,
 // (0, 0) the top-left corner of the image: origin at the eye, unit direction.

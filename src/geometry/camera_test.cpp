@@ -64,7 +64,7 @@ TEST(Camera, FrameFollowsLookAtLikeGlmLookAt) {
   Camera camera;
   camera.position = {0, 2, 8};
   camera.look_at = {0, 2, 0};
-  const CameraFrame frame = camera_frame(camera);
+  const CameraBasis frame = camera_basis(camera);
   EXPECT_NEAR(frame.forward.z, -1.0, tight);
   EXPECT_NEAR(frame.right.x, 1.0, tight);
   EXPECT_NEAR(frame.up.y, 1.0, tight);
@@ -75,7 +75,7 @@ TEST(Camera, UpParallelToViewStillGivesAnOrthonormalFrame) {
   camera.position = {0, 5, 0};
   camera.look_at = {0, 0, 0};
   camera.up = {0, 1, 0};
-  const CameraFrame frame = camera_frame(camera);
+  const CameraBasis frame = camera_basis(camera);
   EXPECT_NEAR(glm::dot(frame.forward, frame.right), 0.0, tight);
   EXPECT_NEAR(glm::dot(frame.forward, frame.up), 0.0, tight);
   EXPECT_NEAR(glm::length(frame.right), 1.0, tight);
@@ -86,7 +86,7 @@ TEST(Camera, UpParallelToViewStillGivesAnOrthonormalFrame) {
 TEST(Camera, CoincidentPositionAndLookAtIsAFailure) {
   Camera camera;
   camera.look_at = camera.position;
-  EXPECT_THROW(camera_frame(camera), Failure);
+  EXPECT_THROW(camera_basis(camera), Failure);
 }
 
 }  // namespace

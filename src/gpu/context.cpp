@@ -60,6 +60,30 @@ Context& Context::headless() {
   return *context;
 }
 
+namespace {
+Context* adopted = nullptr;
+}  // namespace
+
+Context& Context::current() { return adopted ? *adopted : headless(); }
+
+void Context::adopt_current() {
+  if (adopted) return;
+  adopted = new Context(Adopted{});  // never destroyed, as headless()
+}
+
+Context::Context(Adopted) : owned_(false) {
+  const GLubyte* renderer = glGetString(GL_RENDERER);
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (!renderer || major * 10 + minor < 45)
+    throw Failure("use_current_gl_context: no OpenGL 4.5 context is current on this thread (found " +
+                  (renderer ? std::to_string(major) + "." + std::to_string(minor) : std::string("none")) + ")");
+  renderer_ = reinterpret_cast<const char*>(renderer);
+  while (glGetError() != GL_NO_ERROR) {
+  }  // the caller's earlier errors are not airlight's
+}
+
 Context::Context() {
   display_ = surfaceless_display();
   if (display_ == EGL_NO_DISPLAY) display_ = device_display();
@@ -76,6 +100,7 @@ Context::Context() {
 }
 
 Context::~Context() {
+  if (!owned_) return;
   eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display_, context_);
   eglTerminate(display_);
@@ -89,6 +114,8 @@ void Context::debug_callback(GLenum, GLenum type, GLuint, GLenum severity, GLsiz
 }
 
 void Context::check(const std::string& where) {
+  if (!owned_)
+    for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError()) errors_.push_back("GL error " + std::to_string(e));
   if (errors_.empty()) return;
   std::string text = "OpenGL error in " + where + ":";
   for (const auto& e : errors_) text += "\n  " + e;

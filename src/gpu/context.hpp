@@ -15,6 +15,12 @@ public:
   // The process's context, created and made current on first use. Throws
   // airlight::Failure saying what to install when no GL 4.5 core context exists.
   static Context& headless();
+  // The context GPU work runs in: the caller's once adopt_current() was called,
+  // else headless().
+  static Context& current();
+  // From now on current() is the GL context current on this thread (an
+  // engine's). Throws Failure when none is current or it is older than 4.5.
+  static void adopt_current();
 
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -27,13 +33,16 @@ public:
   void check(const std::string& where);
 
 private:
+  struct Adopted {};
   Context();
+  explicit Context(Adopted);
   static void debug_callback(GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
                              const void* self);
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
   std::string renderer_;
   std::vector<std::string> errors_;
+  bool owned_ = true;  // false: the caller's context, whose debug output stays the caller's
 };
 
 }  // namespace airlight::gpu

@@ -59,6 +59,18 @@ void delete_texture(GLuint id) {
 }
 }  // namespace detail
 
+Sampler make_nearest_sampler() {
+  GLuint id = 0;
+  glCreateSamplers(1, &id);
+  glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  return Sampler(id);
+}
+
 size_t allocated_bytes() { return allocations().total; }
 
 Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags) {

@@ -43,6 +43,7 @@ void delete_texture(GLuint id);
 inline void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 inline void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
 inline void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+inline void delete_sampler(GLuint id) { glDeleteSamplers(1, &id); }
 inline void delete_program(GLuint id) { glDeleteProgram(id); }
 inline void delete_shader(GLuint id) { glDeleteShader(id); }
 }  // namespace detail
@@ -52,6 +53,7 @@ using Texture = Object<detail::delete_texture>;
 using Framebuffer = Object<detail::delete_framebuffer>;
 using VertexArray = Object<detail::delete_vertex_array>;
 using Query = Object<detail::delete_query>;
+using Sampler = Object<detail::delete_sampler>;
 using Program = Object<detail::delete_program>;
 using Shader = Object<detail::delete_shader>;
 
@@ -62,6 +64,9 @@ Texture make_texture(GLenum target, GLenum internal_format, int width, int heigh
 Framebuffer make_framebuffer();
 VertexArray make_vertex_array();
 Query make_query(GLenum target);
+// Nearest, clamped, no depth comparison: bound to a unit, it reads a texture's
+// stored values whatever the texture's own parameters (a caller's shadow map).
+Sampler make_nearest_sampler();
 
 // Bytes of storage held by the live buffers and textures made above (texel size
 // × width × height × layers), for `airlight bench`: what a method allocates is the

@@ -5,6 +5,7 @@
 #include <airlight/error.hpp>
 
 #include <glm/gtc/type_ptr.hpp>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -128,6 +129,28 @@ void set_uniform(const Program& p, const char* name, const glm::mat4& v) {
 void set_uniform(const Program& p, const char* name, const std::vector<glm::vec4>& v) {
   if (!v.empty()) glProgramUniform4fv(p.id(), location(p, name), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
 }
+
+namespace {
+std::map<std::string, Program>& program_cache() {
+  static auto* cache = new std::map<std::string, Program>;  // never destroyed, as the context
+  return *cache;
+}
+}  // namespace
+
+const Program& cached_program(std::initializer_list<Stage> stages, const std::string& defines) {
+  std::string key = defines;
+  for (const Stage& s : stages) key += "\n#stage " + std::to_string(s.type) + " " + s.name;
+  auto& cache = program_cache();
+  auto it = cache.find(key);
+  if (it == cache.end()) it = cache.emplace(key, make_program(stages, defines)).first;
+  return it->second;
+}
+
+const Program& cached_compute_program(const std::string& name, const std::string& defines) {
+  return cached_program({{GL_COMPUTE_SHADER, name}}, defines);
+}
+
+int cached_program_count() { return static_cast<int>(program_cache().size()); }
 
 void dispatch_pixels(int width, int height) {
   glDispatchCompute(static_cast<GLuint>((width + pixel_workgroup - 1) / pixel_workgroup),

@@ -31,6 +31,14 @@ struct Stage {
 Program make_program(std::initializer_list<Stage> stages, const std::string& defines = "");
 Program make_compute_program(const std::string& name, const std::string& defines = "");
 
+// The same, compiled on first use and kept for the process, keyed by the
+// stages' names and the define set: a method asks for its program every frame
+// and pays for compiling only when the define set is new.
+const Program& cached_program(std::initializer_list<Stage> stages, const std::string& defines = "");
+const Program& cached_compute_program(const std::string& name, const std::string& defines = "");
+// Programs the cache has compiled so far in this process.
+int cached_program_count();
+
 // Uniforms by name (a name the linker removed is ignored, as GL does).
 void set_uniform(const Program& p, const char* name, int v);
 void set_uniform(const Program& p, const char* name, float v);

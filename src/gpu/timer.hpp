@@ -6,7 +6,7 @@
 // not nest; results are read once, after the frame.
 #include "gpu/gl.hpp"
 
-#include <airlight/method.hpp>
+#include <airlight/timing.hpp>
 
 #include <chrono>
 #include <string>

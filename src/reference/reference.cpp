@@ -180,7 +180,7 @@ struct TileGrid {
   int count() const { return columns * rows; }
 };
 
-void render_tile(const Context& c, const TileGrid& grid, int tile, Frame& frame, Counters& count) {
+void render_tile(const Context& c, const TileGrid& grid, int tile, Images& frame, Counters& count) {
   const int x0 = tile % grid.columns * tile_size, y0 = tile / grid.columns * tile_size;
   for (int j = y0; j < std::min(y0 + tile_size, grid.height); ++j)
     for (int i = x0; i < std::min(x0 + tile_size, grid.width); ++i) {
@@ -194,12 +194,12 @@ void render_tile(const Context& c, const TileGrid& grid, int tile, Frame& frame,
 
 }  // namespace
 
-Frame render(const Scene& scene, int width, int height, const Settings& settings) {
+Images render(const Scene& scene, int width, int height, const Settings& settings) {
   if (width <= 0 || height <= 0) throw Failure("reference: the image size must be positive");
   const RayCaster rays(scene);
   const Context context{scene, rays, settings};
   const TileGrid grid(width, height);
-  Frame frame{Image(width, height), Image(width, height), Image(width, height)};
+  Images frame{Image(width, height), Image(width, height), Image(width, height)};
   std::atomic<long> shadow_rays{0}, nonfinite{0};
   Progress progress("reference", grid.count());
   tbb::parallel_for(tbb::blocked_range<int>(0, grid.count(), 1), [&](const tbb::blocked_range<int>& tiles) {
@@ -214,15 +214,6 @@ Frame render(const Scene& scene, int width, int height, const Settings& settings
   frame.shadow_rays = shadow_rays;
   frame.nonfinite = nonfinite;
   return frame;
-}
-
-const Image& image(const Frame& frame, Pass pass) {
-  switch (pass) {
-    case Pass::airlight: return frame.airlight;
-    case Pass::surface: return frame.surface;
-    case Pass::composite: break;
-  }
-  return frame.composite;
 }
 
 }  // namespace airlight::reference

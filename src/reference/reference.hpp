@@ -8,14 +8,12 @@
 
 namespace airlight::reference {
 
-enum class Pass { composite, airlight, surface };
-
 struct Settings {
   double rel_tol = 1e-3;  // of each light's airlight integral along each view ray
   int min_segments = 32;  // initial split of each view ray (narrower shadows may be missed)
 };
 
-struct Frame {
+struct Images {
   Image airlight;   // L_air = Σ_lights ∫_0^d σs·p·I·V·T_light/r²·T_eye dx    (DESIGN §1)
   Image surface;    // L_surf · T(d); 0 where the view ray reaches the far plane
   Image composite;  // surface + airlight
@@ -26,9 +24,6 @@ struct Frame {
 
 // Renders all three passes of `scene` at width × height. Shows progress on
 // stderr when it is a terminal. Throws airlight::Failure on Embree errors.
-Frame render(const Scene& scene, int width, int height, const Settings& settings = {});
-
-// The image of one pass.
-const Image& image(const Frame& frame, Pass pass);
+Images render(const Scene& scene, int width, int height, const Settings& settings = {});
 
 }  // namespace airlight::reference

@@ -60,12 +60,12 @@ public:
   }
 
 private:
-  struct Frame {
+  struct Scope {
     bool is_array;
     std::string key;
     int index;
   };
-  std::vector<Frame> frames_;
+  std::vector<Scope> frames_;
 };
 
 Json parse_json_text(const std::string& text, const std::string& file) {

@@ -5,7 +5,6 @@
 // configurations of the closed form at the image level.
 #include "core/metrics.hpp"
 #include "geometry/camera.hpp"
-#include "methods/analytic/analytic_method.hpp"
 #include "methods/kit/test_support.hpp"
 #include "reference/reference.hpp"
 
@@ -25,9 +24,8 @@
 namespace airlight::methods {
 namespace {
 
-using test::all_finite_and_non_negative;
-using test::make_light;
-using test::phase;
+using namespace kit::test;
+
 
 constexpr int width = 128, height = 96;
 
@@ -37,8 +35,8 @@ constexpr int width = 128, height = 96;
 // path reads the table: isotropic medium, physical model, hard-edged cone.
 constexpr double table_bound = 0.005;
 
-Frame analytic(const Scene& scene, const std::string& f) {
-  return test::render(analytic_method(), scene, {"F=" + f}, width, height);
+FrameImages analytic(const Scene& scene, const std::string& f) {
+  return kit::test::render(find_method("analytic"), scene, {"F=" + f}, width, height);
 }
 
 double rel_rmse(const Image& image, const Image& reference) { return compare_images(image, reference).rel_rmse; }
@@ -111,7 +109,7 @@ Scene phase_scene(const PhaseCase& c) {
 
 TEST(Analytic, SettingsIncludeTheSharedGpuSettings) {
   std::set<std::string> names;
-  for (const auto& s : analytic_method().settings) names.insert(s.name);
+  for (const auto& s : find_method("analytic").settings) names.insert(s.name);
   EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "F"}));
   EXPECT_EQ(find_method("analytic").source, "Sun et al. 2005 via Kingston 4.2");
 }
@@ -127,9 +125,9 @@ TEST_P(AnalyticPhase, MatchesTheReferenceWithoutOccluders) {
   const PhaseCase& c = phase_cases[std::get<0>(GetParam())];
   const std::string& f = std::get<1>(GetParam());
   const Scene scene = phase_scene(c);
-  const Frame frame = analytic(scene, f);
+  const FrameImages frame = analytic(scene, f);
   ASSERT_TRUE(all_finite_and_non_negative(frame.airlight));
-  const double error = rel_rmse(frame.airlight, test::reference_airlight(scene, width, height));
+  const double error = rel_rmse(frame.airlight, kit::test::reference_airlight(scene, width, height));
   std::printf("%s F=%s: airlight rRMSE %.5f\n", c.name, f.c_str(), error);
   EXPECT_LT(error, table_bound);
 }
@@ -254,7 +252,7 @@ TEST(Analytic, SingularConfigurations) {
   for (Singular& c : singular_cases("hg", phase({{PhaseType::henyey_greenstein, 0.4f, 1.0f}})))
     cases.push_back(std::move(c));
   for (const Singular& c : cases) {
-    const Image& expected = test::reference_airlight(c.scene, width, height);
+    const Image& expected = kit::test::reference_airlight(c.scene, width, height);
     for (const char* f : {"table", "shader"}) {
       const Image image = analytic(c.scene, f).airlight;
       ASSERT_TRUE(all_finite_and_non_negative(image)) << c.scene.name << " F=" << f;
@@ -268,7 +266,7 @@ TEST(Analytic, SingularConfigurations) {
 }
 
 TEST(Analytic, ReportsItsPassAndClosedForms) {
-  const Frame frame = analytic(phase_scene(phase_cases[0]), "table");
+  const FrameImages frame = analytic(phase_scene(phase_cases[0]), "table");
   std::vector<std::string> passes;
   for (const auto& t : frame.times) passes.push_back(t.pass);
   EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "shadow", "surface", "airlight"}));

@@ -7,10 +7,8 @@
 #include "geometry/camera.hpp"
 #include "gpu/context.hpp"
 #include "methods/interleaved/gather_pass.hpp"
-#include "methods/interleaved/interleaved_method.hpp"
 #include "methods/kit/march_pass.hpp"
 #include "methods/kit/test_support.hpp"
-#include "methods/raymarch/raymarch_method.hpp"
 #include "reference/ray_caster.hpp"
 
 #include <gtest/gtest.h>
@@ -25,21 +23,23 @@
 namespace airlight::methods {
 namespace {
 
+using namespace kit::test;
+
 constexpr int width = 128, height = 96;
 
-Frame interleaved(const Scene& scene, const std::vector<std::string>& assignments, int w = width, int h = height) {
-  return test::render(interleaved_method(), scene, assignments, w, h);
+FrameImages interleaved(const Scene& scene, const std::vector<std::string>& assignments, int w = width, int h = height) {
+  return kit::test::render(find_method("interleaved"), scene, assignments, w, h);
 }
 
-Frame raymarch(const Scene& scene, const std::vector<std::string>& assignments, int w = width, int h = height) {
-  return test::render(raymarch_method(), scene, assignments, w, h);
+FrameImages raymarch(const Scene& scene, const std::vector<std::string>& assignments, int w = width, int h = height) {
+  return kit::test::render(find_method("raymarch"), scene, assignments, w, h);
 }
 
 double rel_rmse(const Image& image, const Image& reference) { return compare_images(image, reference).rel_rmse; }
 
 TEST(Interleaved, RegisteredWithItsSettings) {
   std::set<std::string> names;
-  for (const auto& s : interleaved_method().settings) names.insert(s.name);
+  for (const auto& s : find_method("interleaved").settings) names.insert(s.name);
   EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "steps", "jitter", "sampling", "block",
                                           "depth_aware", "depth_threshold", "gather"}));
   EXPECT_EQ(find_method("interleaved").source, "Tóth 2009 §4.1");
@@ -68,7 +68,7 @@ TEST(Interleaved, OnePixelBlocksAreRaymarch) {
 // 0.0026 → 0.0130.
 TEST(Interleaved, ErrorCloseToRaymarchWithTheSameSamples) {
   const Scene scene = builtin_scene("teapot_spot");
-  const Image& ref = test::reference_airlight(scene, width, height);
+  const Image& ref = kit::test::reference_airlight(scene, width, height);
   for (const char* sampling : {"sampling=uniform", "sampling=equiangular"}) {
     const double marched = rel_rmse(raymarch(scene, {"steps=64", sampling}).airlight, ref);
     const double spread = rel_rmse(interleaved(scene, {"steps=64", sampling, "block=4"}).airlight, ref);
@@ -82,7 +82,7 @@ TEST(Interleaved, ErrorCloseToRaymarchWithTheSameSamples) {
 // steps leave the 4×4 blur of shadow edges, which does not depend on N, so the
 // error falls toward it (measured 0.023, 0.013, 0.010).
 std::vector<double> errors_over_steps(const Scene& scene, const char* sampling) {
-  const Image& ref = test::reference_airlight(scene, width, height);
+  const Image& ref = kit::test::reference_airlight(scene, width, height);
   std::vector<double> errors;
   for (int steps : {16, 64, 256})
     errors.push_back(rel_rmse(interleaved(scene, {"steps=" + std::to_string(steps), sampling}).airlight, ref));
@@ -159,7 +159,7 @@ MaskedError masked_error(const Image& image, const Image& reference, const std::
 // out can be the only one that met a narrow shaft.)
 TEST(Interleaved, DepthAwareGatherKeepsShaftsOffTheSilhouette) {
   const Scene scene = builtin_scene("teapot_spot");
-  const Image& ref = test::reference_airlight(scene, width, height);
+  const Image& ref = kit::test::reference_airlight(scene, width, height);
   const std::vector<bool> mask = teapot_silhouette(scene, width, height);
   for (const auto& [gather, bound] : {std::pair{"gather=sum", 0.3}, std::pair{"gather=normalized", 0.85}}) {
     auto band_error = [&](const char* depth_aware) {
@@ -181,15 +181,15 @@ TEST(Interleaved, DepthAwareGatherKeepsShaftsOffTheSilhouette) {
 // non-negative.
 TEST(Interleaved, NoNaNOrInfInHardConfigurations) {
   std::mt19937 random(2001);
-  const Scene base = test::every_feature_scene();
+  const Scene base = kit::test::every_feature_scene();
   const glm::vec3 eye = base.camera.position;
   const glm::vec3 forward = glm::normalize(base.camera.look_at - eye);
   const std::vector<Light> lights{
-      test::make_light(LightType::point, eye, forward, 100.0f),
-      test::make_light(LightType::spot, eye + 0.01f * forward, forward, 100.0f, 25.0f),
-      test::make_light(LightType::spot, eye + 2.0f * forward, -forward, 100.0f, 89.0f, 30.0f),
-      test::make_light(LightType::point, eye + 3.0f * forward, forward, 100.0f),
-      test::make_light(LightType::directional, {}, forward, 1.0f)};
+      kit::test::make_light(LightType::point, eye, forward, 100.0f),
+      kit::test::make_light(LightType::spot, eye + 0.01f * forward, forward, 100.0f, 25.0f),
+      kit::test::make_light(LightType::spot, eye + 2.0f * forward, -forward, 100.0f, 89.0f, 30.0f),
+      kit::test::make_light(LightType::point, eye + 3.0f * forward, forward, 100.0f),
+      kit::test::make_light(LightType::directional, {}, forward, 1.0f)};
   const int sizes[][2] = {{3, 2}, {7, 5}, {24, 18}};
   for (const Light& light : lights)
     for (const auto& size : sizes) {
@@ -199,15 +199,15 @@ TEST(Interleaved, NoNaNOrInfInHardConfigurations) {
           "steps=" + std::to_string(1 + random() % 40), "block=" + std::to_string(1 + random() % 8),
           random() % 2 ? "gather=sum" : "gather=normalized", random() % 2 ? "sampling=uniform" : "sampling=equiangular",
           random() % 2 ? "jitter=blue" : "jitter=none", "shadow_resolution=128"};
-      const Frame frame = interleaved(s, set, size[0], size[1]);
+      const FrameImages frame = interleaved(s, set, size[0], size[1]);
       std::string label;
       for (const auto& a : set) label += a + " ";
-      EXPECT_TRUE(test::all_finite_and_non_negative(frame.airlight)) << label << size[0] << "×" << size[1];
+      EXPECT_TRUE(kit::test::all_finite_and_non_negative(frame.airlight)) << label << size[0] << "×" << size[1];
     }
 }
 
 TEST(Interleaved, ReportsEveryPassTime) {
-  const Frame frame = interleaved(builtin_scene("teapot_spot"), {"steps=8"}, 32, 24);
+  const FrameImages frame = interleaved(builtin_scene("teapot_spot"), {"steps=8"}, 32, 24);
   std::vector<std::string> passes;
   for (const auto& t : frame.times) passes.push_back(t.pass);
   EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "shadow", "surface", "march", "gather"}));

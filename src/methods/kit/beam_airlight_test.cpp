@@ -62,7 +62,7 @@ Scene beam_scene() {
   return s;
 }
 
-Frame render(const std::string& method_name, const Scene& scene, const std::vector<std::string>& assignments) {
+FrameImages render(const std::string& method_name, const Scene& scene, const std::vector<std::string>& assignments) {
   return kit::test::render(find_method(method_name), scene, assignments, width, height);
 }
 

@@ -1,8 +1,39 @@
 #include "methods/kit/gpu_method.hpp"
 
+#include "gpu/context.hpp"
+#include "gpu/program.hpp"
+#include "gpu/state.hpp"
+
 #include <airlight/error.hpp>
+#include <tuple>
 
 namespace airlight::kit {
+namespace {
+
+// The image format an engine's RGBA target is written with (engine.hpp).
+struct ImageFormat {
+  GLenum gl;
+  const char* glsl;
+};
+ImageFormat image_format(GLuint texture, const char* what) {
+  GLint format = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  if (format == GL_RGBA32F) return {GL_RGBA32F, "rgba32f"};
+  if (format == GL_RGBA16F) return {GL_RGBA16F, "rgba16f"};
+  throw InputError("EngineTarget", what, "must be an RGBA32F or RGBA16F texture");
+}
+
+void check_size(GLuint texture, const char* what, int width, int height) {
+  GLint w = 0, h = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
+  if (w != width || h != height)
+    throw InputError("EngineTarget", what,
+                     "is " + std::to_string(w) + "x" + std::to_string(h) + ", the frame is " + std::to_string(width) +
+                         "x" + std::to_string(height));
+}
+
+}  // namespace
 
 std::vector<SettingSpec> gpu_settings(std::vector<SettingSpec> own) {
   using T = SettingSpec::Type;
@@ -20,31 +51,83 @@ GpuMethod::GpuMethod(const Settings& settings)
     : frame_settings_{settings.integer("shadow_resolution"), static_cast<float>(settings.real("shadow_bias"))} {}
 
 void GpuMethod::prepare(const Scene& scene) {
-  context_ = &Context::headless();
+  context_ = &gpu::Context::current();
+  gpu::SavedState state;
   frame_.prepare(scene);
   prepare_airlight(scene);
+  rendered_ = false;
   context_->check("prepare");
 }
 
-airlight::Frame GpuMethod::render(int width, int height) {
-  if (!context_) throw Failure("render() before prepare()");
+void GpuMethod::render_frame(const FrameInputs& inputs) { draw(inputs, nullptr); }
+
+void GpuMethod::render_frame(const FrameInputs& inputs, const EngineFrame& engine) { draw(inputs, &engine); }
+
+void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
+  if (!context_) throw Failure("render_frame() before prepare()");
+  gpu::SavedState state;
   PassTimer timer;
-  frame_.render(width, height, frame_settings_, timer);
-  if (width != width_ || height != height_) {
-    airlight_ = make_texture(GL_TEXTURE_2D, GL_RGBA32F, width, height);
-    width_ = width;
-    height_ = height;
+  frame_.render(inputs, frame_settings_, engine, !engine, timer);
+  if (inputs.width != width_ || inputs.height != height_) {
+    airlight_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, inputs.width, inputs.height);
+    width_ = inputs.width;
+    height_ = inputs.height;
   }
   frame_.bind();
   render_airlight(frame_, airlight_, timer);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
-  airlight::Frame frame;
-  frame.airlight = read_image(airlight_, width, height);
-  frame.surface = read_image(frame_.surface(), width, height);
-  frame.times = timer.results();
-  frame.stats = stats();
+  if (engine) write_engine_target(engine->target, timer);
+  times_ = timer.results();
+  rendered_ = true;
   context_->check("render");
-  return frame;
+}
+
+// L_air and T(d) into the engine's textures (engine_target.comp.glsl), then
+// L = L_surf·T + L_air into its colour target by dual-source blending
+// (engine_composite.frag.glsl): the engine's colour is only blended into.
+void GpuMethod::write_engine_target(const EngineTarget& target, PassTimer& timer) {
+  gpu::ScopedPass pass(timer, "engine");
+  const std::string defines = frame_defines();
+  for (const auto& [texture, what, transmittance] :
+       {std::tuple{target.airlight, "airlight", false}, std::tuple{target.transmittance, "transmittance", true}}) {
+    if (!texture) continue;
+    check_size(texture, what, width_, height_);
+    const ImageFormat format = image_format(texture, what);
+    const Program& program = gpu::cached_compute_program(
+        "methods/kit/engine_target.comp.glsl",
+        defines + "#define TARGET_FORMAT " + format.glsl + "\n" + (transmittance ? "#define TRANSMITTANCE\n" : ""));
+    glUseProgram(program.id());
+    glBindImageTexture(0, airlight_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, format.gl);
+    gpu::dispatch_pixels(width_, height_);
+  }
+  if (!target.colour) return;
+  check_size(target.colour, "colour", width_, height_);
+  const gpu::Framebuffer fbo = gpu::make_framebuffer();
+  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.colour, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glViewport(0, 0, width_, height_);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_SRC1_COLOR);  // L_air·1 + L_surf·T
+  glUseProgram(gpu::cached_program({{GL_VERTEX_SHADER, "methods/kit/fullscreen.vert.glsl"},
+                                    {GL_FRAGMENT_SHADER, "methods/kit/engine_composite.frag.glsl"}},
+                                   defines)
+                   .id());
+  glBindTextureUnit(binding::first_free_texture, airlight_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+}
+
+FrameImages GpuMethod::read_back() {
+  if (!rendered_) throw Failure("read_back() before render_frame()");
+  gpu::SavedState state;
+  FrameImages images;
+  images.airlight = gpu::read_image(airlight_, width_, height_);
+  images.surface = gpu::read_image(frame_.surface(), width_, height_);
+  images.times = times_;
+  images.stats = stats();
+  context_->check("read back");
+  return images;
 }
 
 }  // namespace airlight::kit

@@ -1,17 +1,24 @@
 #pragma once
-// The base of every GPU method (DESIGN §3): prepare() creates the headless GL
-// context (its Failure names what to install: the command exits 1) and uploads
-// the scene into the shared frame; render() runs the frame's passes (G-buffer,
-// shadow maps, surface), then the method's airlight passes into an RGBA32F
-// target, and reads back L_air and L_surf·T(d) with every pass's GPU time.
-#include "gpu/context.hpp"
-#include "methods/kit/scene_frame.hpp"
+// The base of every GPU method (docs/design.md §3). prepare() takes the GL
+// context (the headless one, or the engine's after use_current_gl_context();
+// a missing driver is a Failure naming what to install: the command exits 1)
+// and uploads what the scene fixes into the shared frame. Each frame runs the
+// frame's passes (G-buffer, shadow maps, surface) for this frame's inputs, then
+// the method's airlight passes into an RGBA32F target that stays on the GPU;
+// read_back() copies L_air and L_surf·T(d) to the CPU with every pass's time.
+// In an engine's frame the results go to the engine's textures instead.
 #include "gpu/timer.hpp"
+#include "methods/kit/scene_frame.hpp"
 
+#include <airlight/engine.hpp>
 #include <airlight/method.hpp>
 #include <string>
 #include <utility>
 #include <vector>
+
+namespace airlight::gpu {
+class Context;
+}
 
 namespace airlight::kit {
 
@@ -23,24 +30,33 @@ class GpuMethod : public Method {
 public:
   explicit GpuMethod(const Settings& settings);
   void prepare(const Scene& scene) final;
-  airlight::Frame render(int width, int height) final;
+  void render_frame(const FrameInputs& inputs) final;
+  void render_frame(const FrameInputs& inputs, const EngineFrame& engine) final;
+  FrameImages read_back() final;
 
 protected:
-  // After the frame is prepared, with the context current: programs, tables.
+  // After the frame is prepared, with the context current: what depends only
+  // on the scene (tables, lattice meshes, noise tiles).
   virtual void prepare_airlight(const Scene& scene) = 0;
   // Writes L_air into `target` (RGBA32F, frame.width() × frame.height()), timing
   // its passes with `timer` (e.g. ScopedPass(timer, "airlight")). The frame's
-  // buffers and textures are bound (SceneFrame::bind) when it is called.
+  // buffers and textures are bound (SceneFrame::bind) when it is called;
+  // frame.inputs() is this frame's camera, lights and medium.
   virtual void render_airlight(const SceneFrame& frame, const Texture& target, PassTimer& timer) = 0;
-  // Method-specific counters for Frame::stats.
+  // Method-specific counters for FrameImages::stats.
   virtual std::vector<std::pair<std::string, double>> stats() const { return {}; }
 
 private:
+  void draw(const FrameInputs& inputs, const EngineFrame* engine);
+  void write_engine_target(const EngineTarget& target, PassTimer& timer);
+
   FrameSettings frame_settings_;
-  Context* context_ = nullptr;
+  gpu::Context* context_ = nullptr;
   SceneFrame frame_;
   Texture airlight_;
   int width_ = 0, height_ = 0;
+  std::vector<PassTime> times_;
+  bool rendered_ = false;
 };
 
 }  // namespace airlight::kit

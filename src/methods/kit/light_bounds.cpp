@@ -128,7 +128,7 @@ LightBounds light_bounds(const Light& light, const reference::RayCaster& rays) {
   return v;
 }
 
-double lit_far_depth(const LightBounds& volume, const geometry::CameraFrame& camera, double far) {
+double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& camera, double far) {
   if (!volume.bounded) return far;
   double deepest = 0.0;
   for (const glm::dvec3& p : volume.hull) deepest = std::max(deepest, glm::dot(p - camera.position, camera.forward));

@@ -37,6 +37,6 @@ LightBounds light_bounds(const Light& light, const reference::RayCaster& rays);
 // [0, far]: the deepest hull point, or `far` for an unbounded region. A grid of
 // rays can miss a spike of geometry narrower than its spacing, which then ends
 // the planes early there; 1% of the depth is added for it.
-double lit_far_depth(const LightBounds& volume, const geometry::CameraFrame& camera, double far);
+double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& camera, double far);
 
 }  // namespace airlight::kit

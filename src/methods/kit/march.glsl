@@ -69,7 +69,7 @@ vec2 segment_sample(Segment s, float u, int n) {
 const int ALL_LIGHTS = -1;      // `group` of march_segment: every light,
 const int UNBOUNDED_SUNS = -2;  // the directional lights without a beam, or one light (>= 0)
 
-bool unbounded_sun(int i) { return lights[i].meta.x == LIGHT_DIRECTIONAL && !has_beam(i); }
+bool unbounded_sun(int i) { return lights[i].type == LIGHT_DIRECTIONAL && !has_beam(i); }
 
 bool in_group(int i, int group) {
   return group == ALL_LIGHTS || (group == UNBOUNDED_SUNS ? unbounded_sun(i) : i == group);
@@ -87,7 +87,7 @@ vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) 
   if (!(s.b > s.a)) return vec3(0.0);
   int lo = group >= 0 ? group : 0;
   int hi = group >= 0 ? group + 1 : light_count();
-  vec3 eye = frame_eye.xyz;
+  vec3 eye = frame.eye;
   vec3 sum = vec3(0.0);
   for (int k = r.first; k < r.end; k += r.stride) {
     vec2 t = segment_sample(s, (float(k) + offset) / float(r.count), r.count);
@@ -112,13 +112,13 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset, int sampling
   if (sampling == SAMPLING_UNIFORM) return march_segment(dir, uniform_segment(0.0, d), r, offset, ALL_LIGHTS);
   vec3 sum = vec3(0.0);
   if (any_unbounded_sun()) sum += march_segment(dir, uniform_segment(0.0, d), r, offset, UNBOUNDED_SUNS);
-  vec3 eye = frame_eye.xyz;
+  vec3 eye = frame.eye;
   for (int i = 0; i < light_count(); ++i) {
     if (unbounded_sun(i)) continue;
     vec2 lit = lit_interval(i, eye, dir, 0.0, d);
     if (!(lit.y > lit.x)) continue;
     Segment s = has_beam(i) ? uniform_segment(lit.x, lit.y)
-                            : equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position.xyz);
+                            : equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position);
     sum += march_segment(dir, s, r, offset, i);
   }
   return sum;
@@ -132,17 +132,17 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset, int sampling
 // carries what changes fastest from pixel to pixel — the 1/h peak next to a
 // light, a cone's edge, the length of the ray — and is 0 where no light reaches.
 vec3 light_guide(vec3 dir, float d) {
-  vec3 eye = frame_eye.xyz;
+  vec3 eye = frame.eye;
   vec3 guide = vec3(0.0);
   for (int i = 0; i < light_count(); ++i) {
     vec2 lit = lit_interval(i, eye, dir, 0.0, d);
     if (!(lit.y > lit.x)) continue;
-    if (lights[i].meta.x == LIGHT_DIRECTIONAL) {
-      guide += lights[i].color.rgb * (lit.y - lit.x);
+    if (lights[i].type == LIGHT_DIRECTIONAL) {
+      guide += lights[i].color * (lit.y - lit.x);
       continue;
     }
-    Segment s = equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position.xyz);
-    guide += lights[i].color.rgb * ((s.theta_b - s.theta_a) / s.h);
+    Segment s = equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position);
+    guide += lights[i].color * ((s.theta_b - s.theta_a) / s.h);
   }
   return guide;
 }

@@ -32,7 +32,7 @@ inline Scene case_scene(const std::string& name) {
   return builtin_scene(name);
 }
 
-inline Frame render_case(const std::string& method_name, const Scene& scene, const std::vector<std::string>& assignments) {
+inline FrameImages render_case(const std::string& method_name, const Scene& scene, const std::vector<std::string>& assignments) {
   return render(find_method(method_name), scene, assignments, width, height);
 }
 
@@ -48,7 +48,7 @@ class Quality : public ::testing::TestWithParam<Case> {};
 TEST_P(Quality, AirlightWithinTolerance) {
   const Case& c = GetParam();
   const Image& expected = reference_airlight(c.scene);
-  const Frame frame = render_case(c.method, case_scene(c.scene), c.settings);
+  const FrameImages frame = render_case(c.method, case_scene(c.scene), c.settings);
   const ImageError e = compare_images(frame.airlight, expected);
   std::printf("%s on %s: rRMSE %.4f (bound %.3f), max abs %.4f\n", c.method, c.scene, e.rel_rmse, c.max_rel_rmse,
               e.max_abs);

@@ -37,7 +37,7 @@ const MethodInfo& find_method(const std::string& name) {
   throw InputError("--method", name, "unknown method (known: " + known + ")");
 }
 
-Image select_pass(const Frame& frame, Pass pass) {
+Image select_pass(const FrameImages& frame, Pass pass) {
   if (pass == Pass::airlight) return frame.airlight;
   if (pass == Pass::surface) return frame.surface;
   Image composite = frame.surface;  // L = L_surf·T(d) + L_air (docs/design.md §1)

@@ -4,6 +4,7 @@
 // optics::arrival, light_leg_depth, eye_leg_depth, scattering and inscatter
 // (src/optics/), so that GPU passes match src/reference/reference.cpp.
 // Binding points come as BINDING_* macros from kit::frame_defines().
+#include "methods/kit/frame_data.glsl"
 #include "optics/phase.glsl"
 #include "optics/light.glsl"
 #include "optics/media.glsl"
@@ -12,52 +13,12 @@
 const int LIGHT_POINT = 0;
 const int LIGHT_SPOT = 1;
 const int LIGHT_DIRECTIONAL = 2;
-// Shadow map kinds (SceneLight.meta.y).
+// Shadow map kinds (SceneLight.shadow_kind).
 const int SHADOW_NONE = 0;  // no occluders in the scene: always visible
 const int SHADOW_MAP = 1;   // 2D: perspective over a spot's cone, or orthographic for directional
 const int SHADOW_CUBE = 2;  // cube: point lights and spots of cone >= kit::wide_spot_deg (Tóth §4)
 
-layout(std140, binding = BINDING_FRAME_BLOCK) uniform FrameBlock {
-  mat4 frame_view_projection;  // world → clip of the camera (G-buffer pass)
-  vec4 frame_eye;              // xyz: camera position
-  vec4 frame_forward;          // geometry::camera_frame: forward, right, up (xyz)
-  vec4 frame_right;
-  vec4 frame_up;
-  vec4 frame_image;            // width, height, tan(fov_y / 2), aspect = width / height
-  vec4 frame_clip;             // near, far (view depths), shadow bias (texels), shadow resolution
-  vec4 medium_sigma_s;         // rgb, 1/m: the medium that fills space
-  vec4 medium_sigma_t;         // rgb, 1/m
-  vec4 scene_ambient;          // rgb
-  vec4 light_model_coeffs;     // a0, a1 (Nilsson eq. 2.13)
-  ivec4 scene_counts;          // lights, volumes, medium's lobes (lobes[0 .. n)), light model
-};
-
-struct SceneLight {
-  vec4 position;       // xyz: point / spot position, or a directional light's beam origin;
-                       // w: spot cone half-angle (rad), or beam length (m; 0: no beam)
-  vec4 direction;      // xyz: spot axis or directional travel (unit); w: edge width (rad)
-  vec4 color;          // rgb: intensity W/sr (point, spot) or irradiance W/m² (directional);
-                       // w: tan(cone) for gobo_uv, 0 when cone >= 90°
-  vec4 gobo_right;     // xyz: the gobo / beam frame (optics gobo_frame); w: beam width (m)
-  vec4 gobo_up;        // xyz; w: beam height (m)
-  mat4 shadow_matrix;  // world → clip of the 2D shadow map
-  ivec4 meta;          // LightType, shadow kind, shadow layer (2D) or cube index, gobo layer (-1: none)
-  vec4 shadow;         // texel footprint = (x·distance + y) / resolution
-};
-
-struct SceneVolume {
-  vec4 lo, hi;       // box corners (xyz)
-  vec4 sigma_s;      // rgb, 1/m, added to the medium's inside the box
-  vec4 sigma_t;      // rgb, 1/m
-  ivec4 lobe_range;  // first lobe, lobe count
-};
-
-struct SceneLobe {
-  int type;  // PHASE_* (optics/phase.glsl)
-  float g;
-  float weight;
-  float unused;
-};
+layout(std140, binding = BINDING_FRAME_BLOCK) uniform FrameBlock { FrameData frame; };
 
 layout(std430, binding = BINDING_LIGHTS) readonly buffer SceneLights { SceneLight lights[]; };
 layout(std430, binding = BINDING_VOLUMES) readonly buffer SceneVolumes { SceneVolume volumes[]; };
@@ -71,10 +32,10 @@ layout(binding = BINDING_GOBOS) uniform sampler2DArray gobo_maps;
 layout(binding = BINDING_SHADOW_MAPS) uniform sampler2DArray shadow_maps;
 layout(binding = BINDING_SHADOW_CUBES) uniform samplerCubeArray shadow_cubes;
 
-int light_count() { return scene_counts.x; }
-int volume_count() { return scene_counts.y; }
-bool simplified_model() { return scene_counts.w == LIGHT_MODEL_SIMPLIFIED; }
-ivec2 frame_size() { return ivec2(frame_image.xy); }
+int light_count() { return frame.light_count; }
+int volume_count() { return frame.volume_count; }
+bool simplified_model() { return frame.light_model == LIGHT_MODEL_SIMPLIFIED; }
+ivec2 frame_size() { return ivec2(frame.size); }
 
 // ---- camera (DESIGN §5, geometry::primary_ray) ------------------------------
 
@@ -82,15 +43,15 @@ ivec2 frame_size() { return ivec2(frame_image.xy); }
 // bottom-left corner; a pixel's centre is its integer corner + 0.5, as
 // gl_FragCoord.xy). Image row j (top = 0) is GL row height − 1 − j.
 vec3 pixel_ray(vec2 pixel) {
-  vec2 ndc = 2.0 * pixel / frame_image.xy - 1.0;
-  vec2 plane = ndc * frame_image.z * vec2(frame_image.w, 1.0);
-  return normalize(frame_forward.xyz + plane.x * frame_right.xyz + plane.y * frame_up.xyz);
+  vec2 ndc = 2.0 * pixel / frame.size - 1.0;
+  vec2 plane = ndc * frame.tan_half_fov_y * vec2(frame.aspect, 1.0);
+  return normalize(frame.forward + plane.x * frame.right + plane.y * frame.up);
 }
 
 // Distance along unit `dir` to the camera's far plane (geometry::far_distance).
 float far_plane_distance(vec3 dir) {
-  float cos_axis = dot(dir, frame_forward.xyz);
-  return cos_axis > 0.0 ? frame_clip.y / cos_axis : positive_infinity();
+  float cos_axis = dot(dir, frame.forward);
+  return cos_axis > 0.0 ? frame.far_plane / cos_axis : positive_infinity();
 }
 
 // Eye distance along the pixel's ray to the visible surface, or to the far plane.
@@ -107,30 +68,30 @@ float phase_sum(int first, int count, float cos_theta) {
 // optics::scattering: Σ over media containing x of σs·p(cos θ); σs/4π under the
 // simplified model (Nilsson eq. 2.14).
 vec3 scattering(vec3 x, float cos_theta) {
-  if (simplified_model()) return medium_sigma_s.rgb * INV_4PI;
-  vec3 sum = medium_sigma_s.rgb * phase_sum(0, scene_counts.z, cos_theta);
+  if (simplified_model()) return frame.medium_sigma_s * INV_4PI;
+  vec3 sum = frame.medium_sigma_s * phase_sum(0, frame.medium_lobes, cos_theta);
   for (int v = 0; v < volume_count(); ++v)
-    if (box_contains(x, volumes[v].lo.xyz, volumes[v].hi.xyz))
-      sum += volumes[v].sigma_s.rgb * phase_sum(volumes[v].lobe_range.x, volumes[v].lobe_range.y, cos_theta);
+    if (box_contains(x, volumes[v].lo, volumes[v].hi))
+      sum += volumes[v].sigma_s * phase_sum(volumes[v].first_lobe, volumes[v].lobe_count, cos_theta);
   return sum;
 }
 
 // optics::optical_depth: ∫σt along the segment a → b, medium and volumes.
 vec3 optical_depth(vec3 a, vec3 b) {
-  vec3 depth = medium_sigma_t.rgb * length(b - a);
+  vec3 depth = frame.medium_sigma_t * length(b - a);
   for (int v = 0; v < volume_count(); ++v)
-    depth += volumes[v].sigma_t.rgb * box_chord(a, b, volumes[v].lo.xyz, volumes[v].hi.xyz);
+    depth += volumes[v].sigma_t * box_chord(a, b, volumes[v].lo, volumes[v].hi);
   return depth;
 }
 
 // optics::eye_leg_depth: zero under the simplified model (T = 1, Nilsson eq. 2.15).
 vec3 eye_leg_depth(vec3 a, vec3 b) { return simplified_model() ? vec3(0.0) : optical_depth(a, b); }
 
-// A directional light with a beam (position.w = its length > 0), and the beam.
-bool has_beam(int i) { return lights[i].meta.x == LIGHT_DIRECTIONAL && lights[i].position.w > 0.0; }
+// A directional light with a beam (beam_length > 0), and the beam.
+bool has_beam(int i) { return lights[i].type == LIGHT_DIRECTIONAL && lights[i].beam_length > 0.0; }
 Beam light_beam(int i) {
-  return Beam(lights[i].position.xyz, lights[i].direction.xyz, lights[i].gobo_right.xyz, lights[i].gobo_up.xyz,
-              vec2(lights[i].gobo_right.w, lights[i].gobo_up.w), lights[i].position.w);
+  return Beam(lights[i].position, lights[i].direction, lights[i].gobo_right, lights[i].gobo_up,
+              vec2(lights[i].beam_width, lights[i].beam_height), lights[i].beam_length);
 }
 
 // optics::light_leg_depth: to the light's position; a beam, emitted at its
@@ -138,11 +99,11 @@ Beam light_beam(int i) {
 // lights only through bounded volumes (DESIGN §1).
 vec3 light_leg_depth(int i, vec3 x) {
   if (simplified_model()) return vec3(0.0);
-  if (lights[i].meta.x != LIGHT_DIRECTIONAL) return optical_depth(x, lights[i].position.xyz);
-  if (has_beam(i)) return optical_depth(x, x - max(beam_depth(light_beam(i), x), 0.0) * lights[i].direction.xyz);
+  if (lights[i].type != LIGHT_DIRECTIONAL) return optical_depth(x, lights[i].position);
+  if (has_beam(i)) return optical_depth(x, x - max(beam_depth(light_beam(i), x), 0.0) * lights[i].direction);
   vec3 depth = vec3(0.0);
   for (int v = 0; v < volume_count(); ++v)
-    depth += volumes[v].sigma_t.rgb * box_ray_chord(x, -lights[i].direction.xyz, volumes[v].lo.xyz, volumes[v].hi.xyz);
+    depth += volumes[v].sigma_t * box_ray_chord(x, -lights[i].direction, volumes[v].lo, volumes[v].hi);
   return depth;
 }
 
@@ -160,7 +121,7 @@ struct Arrival {
 
 // The gobo colour of light i at uv (1 without a gobo; black outside [0, 1]²).
 vec3 gobo_colour(int i, vec2 uv) {
-  int gobo = lights[i].meta.w;
+  int gobo = lights[i].gobo_layer;
   return gobo < 0 ? vec3(1.0) : sample_gobo(gobo_maps, float(gobo), uv);
 }
 
@@ -168,13 +129,13 @@ vec3 gobo_colour(int i, vec2 uv) {
 // x: spot → spot_cone · gobo colour toward x; directional with a beam → (x
 // inside the beam) · gobo colour at beam_uv(x); point and unbounded directional → 1.
 vec3 light_map(int i, vec3 x) {
-  if (lights[i].meta.x == LIGHT_SPOT) {
-    vec3 axis = lights[i].direction.xyz, delta = x - lights[i].position.xyz;
+  if (lights[i].type == LIGHT_SPOT) {
+    vec3 axis = lights[i].direction, delta = x - lights[i].position;
     float r = length(delta);
     vec3 dir = r > 0.0 ? delta / r : axis;  // at the apex: the axis, as light_arrival_unmapped
-    float cone = spot_cone(axis, lights[i].position.w, lights[i].direction.w, dir);
+    float cone = spot_cone(axis, lights[i].cone, lights[i].edge, dir);
     if (cone == 0.0) return vec3(0.0);
-    vec2 uv = gobo_uv(axis, lights[i].gobo_right.xyz, lights[i].gobo_up.xyz, lights[i].color.w, dir);
+    vec2 uv = gobo_uv(axis, lights[i].gobo_right, lights[i].gobo_up, lights[i].tan_cone, dir);
     return cone * gobo_colour(i, uv);
   }
   if (!has_beam(i)) return vec3(1.0);
@@ -185,13 +146,13 @@ vec3 light_map(int i, vec3 x) {
 // optics::arrival without the light map: intensity/falloff toward x (point,
 // spot), or the irradiance (directional).
 Arrival light_arrival_unmapped(int i, vec3 x) {
-  if (lights[i].meta.x == LIGHT_DIRECTIONAL)
-    return Arrival(lights[i].color.rgb, -lights[i].direction.xyz, positive_infinity());
-  vec3 delta = lights[i].position.xyz - x;
+  if (lights[i].type == LIGHT_DIRECTIONAL)
+    return Arrival(lights[i].color, -lights[i].direction, positive_infinity());
+  vec3 delta = lights[i].position - x;
   float r = length(delta);
-  vec3 to_light = r > 0.0 ? delta / r : -lights[i].direction.xyz;
+  vec3 to_light = r > 0.0 ? delta / r : -lights[i].direction;
   vec3 irradiance =
-      arrival_irradiance(lights[i].color.rgb, scene_counts.w, r, light_model_coeffs.y, light_model_coeffs.x);
+      arrival_irradiance(lights[i].color, frame.light_model, r, frame.light_model_a1, frame.light_model_a0);
   return Arrival(irradiance, to_light, r);
 }
 
@@ -209,8 +170,8 @@ Arrival light_arrival(int i, vec3 x) {
 // beam its box (beam_interval); else all of it. Empty: !(x < y).
 vec2 lit_interval(int i, vec3 eye, vec3 dir, float t0, float t1) {
   if (has_beam(i)) return beam_interval(light_beam(i), eye, dir, t0, t1);
-  if (lights[i].meta.x != LIGHT_SPOT) return vec2(t0, t1);
-  ConeIntervals lit = cone_intervals(lights[i].position.xyz, lights[i].direction.xyz, lights[i].position.w,
+  if (lights[i].type != LIGHT_SPOT) return vec2(t0, t1);
+  ConeIntervals lit = cone_intervals(lights[i].position, lights[i].direction, lights[i].cone,
                                      eye, dir, t0, t1);
   return lit.count > 0 ? vec2(lit.piece[0].x, lit.piece[lit.count - 1].y) : vec2(t1, t0);
 }
@@ -220,22 +181,22 @@ vec2 lit_interval(int i, vec3 eye, vec3 dir, float t0, float t1) {
 // What a shadow map stores (R32F, linear): the distance from a point light or
 // spot to x, or x's depth along a directional light's travel.
 float shadow_distance(int i, vec3 x) {
-  if (lights[i].meta.x == LIGHT_DIRECTIONAL) return dot(x, lights[i].direction.xyz);
-  return length(x - lights[i].position.xyz);
+  if (lights[i].type == LIGHT_DIRECTIONAL) return dot(x, lights[i].direction);
+  return length(x - lights[i].position);
 }
 
 // World size of one shadow-map texel at x (at the map's centre, where texels are largest).
 float shadow_texel(int i, vec3 x) {
-  float along = lights[i].meta.x == LIGHT_DIRECTIONAL ? 0.0 : length(x - lights[i].position.xyz);
-  return (lights[i].shadow.x * along + lights[i].shadow.y) / frame_clip.w;
+  float along = lights[i].type == LIGHT_DIRECTIONAL ? 0.0 : length(x - lights[i].position);
+  return (lights[i].texel_per_distance * along + lights[i].texel_constant) / frame.shadow_resolution;
 }
 
 // The stored distance of the nearest occluder toward x; +∞ where x lies outside
 // the map (nothing in the scene's bounds can occlude it there).
 float shadow_occluder(int i, vec3 x) {
-  float layer = float(lights[i].meta.z);
-  if (lights[i].meta.y == SHADOW_CUBE) {
-    vec3 dir = x - lights[i].position.xyz;
+  float layer = float(lights[i].shadow_layer);
+  if (lights[i].shadow_kind == SHADOW_CUBE) {
+    vec3 dir = x - lights[i].position;
     return dir == vec3(0.0) ? positive_infinity() : texture(shadow_cubes, vec4(dir, layer)).r;
   }
   vec4 clip = lights[i].shadow_matrix * vec4(x, 1.0);
@@ -248,7 +209,7 @@ float shadow_occluder(int i, vec3 x) {
 // V(x) from light i's shadow map, x lit when its distance minus `bias` does not
 // exceed the stored one.
 float shadow_test(int i, vec3 x, float bias) {
-  if (lights[i].meta.y == SHADOW_NONE) return 1.0;
+  if (lights[i].shadow_kind == SHADOW_NONE) return 1.0;
   return shadow_distance(i, x) - bias <= shadow_occluder(i, x) ? 1.0 : 0.0;
 }
 
@@ -256,7 +217,7 @@ float shadow_test(int i, vec3 x, float bias) {
 // the medium cannot shadow itself; the bias only keeps points a fraction of a
 // texel in front of a lit, sloped surface lit).
 float shadow_visibility(int i, vec3 x) {
-  return shadow_test(i, x, frame_clip.z * shadow_texel(i, x));
+  return shadow_test(i, x, frame.shadow_bias * shadow_texel(i, x));
 }
 
 // V at a surface point with (eye-facing) geometric normal n: the point moves off
@@ -265,7 +226,7 @@ float shadow_visibility(int i, vec3 x) {
 // 0.71·tan θ texels nearer the light along the ray, while the offset gains
 // b/cos θ: b = 1 clears it at every incidence angle θ.
 float surface_visibility(int i, vec3 x, vec3 n) {
-  return shadow_test(i, x + n * (frame_clip.z * shadow_texel(i, x)), 0.0);
+  return shadow_test(i, x + n * (frame.shadow_bias * shadow_texel(i, x)), 0.0);
 }
 
 // ---- single scattering (optics::inscatter, DESIGN §1) -------------------------

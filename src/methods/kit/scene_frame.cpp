@@ -2,6 +2,7 @@
 
 #include "geometry/camera.hpp"
 #include "gpu/program.hpp"
+#include "methods/kit/frame_data.hpp"
 #include "optics/light.hpp"
 
 #include <airlight/error.hpp>
@@ -20,41 +21,20 @@ using namespace gpu;
 
 namespace {
 
-// ---- CPU mirrors of src/methods/kit/scene.glsl (vec4-aligned: std140 = std430) ----
+using shader::FrameData;
+using shader::SceneLight;
+using shader::SceneLobe;
+using shader::SceneVolume;
 
-struct FrameBlock {
-  glm::mat4 view_projection;
-  glm::vec4 eye, forward, right, up;
-  glm::vec4 image;  // width, height, tan(fov_y / 2), aspect
-  glm::vec4 clip;   // near, far, shadow bias (texels), shadow resolution
-  glm::vec4 medium_sigma_s, medium_sigma_t, ambient;
-  glm::vec4 light_model;  // a0, a1
-  glm::ivec4 counts;      // lights, volumes, medium lobes, light model
-};
-
-struct GpuLight {
-  glm::vec4 position;    // xyz: position, or a beam's origin; w: cone (rad), or beam length (0: no beam)
-  glm::vec4 direction;   // w: edge (rad)
-  glm::vec4 color;       // w: tan(cone) for gobo_uv, 0 when cone >= 90°
-  glm::vec4 gobo_right;  // xyz: gobo / beam frame; w: beam width
-  glm::vec4 gobo_up;     // xyz; w: beam height
-  glm::mat4 shadow_matrix;
-  glm::ivec4 meta;       // type, shadow kind, shadow slot, gobo layer
-  glm::vec4 shadow;      // texel footprint = (x·distance + y) / resolution
-};
-
-struct GpuVolume {
-  glm::vec4 lo, hi, sigma_s, sigma_t;
-  glm::ivec4 lobe_range;
-};
-
-struct GpuLobe {
-  int type;
-  float g, weight, unused;
-};
-
+// One vertex of the scene's meshes, in its object's space.
 struct Vertex {
   glm::vec3 position, normal, albedo;
+  GLint object;  // index into Scene::meshes and the ObjectTransform array
+};
+
+// Per mesh (gbuffer.vert.glsl): object → world, and its inverse transpose for normals.
+struct ObjectTransform {
+  glm::mat4 model, normal;
 };
 
 enum ShadowKind { shadow_none = 0, shadow_map = 1, shadow_cube = 2 };
@@ -67,22 +47,37 @@ struct Bounds {
   glm::dvec3 corner(int k) const { return {(k & 1 ? hi : lo).x, (k & 2 ? hi : lo).y, (k & 4 ? hi : lo).z}; }
 };
 
-Bounds scene_bounds(const Scene& scene) {
+void extend(Bounds& b, const glm::dvec3& p) {
+  b.lo = glm::min(b.lo, p);
+  b.hi = glm::max(b.hi, p);
+}
+
+// Object-space bounds of one mesh.
+std::pair<glm::dvec3, glm::dvec3> mesh_bounds(const Mesh& mesh) {
   Bounds b;
-  for (const Mesh& mesh : scene.meshes)
-    for (const glm::vec3& p : mesh.positions) {
-      b.lo = glm::min(b.lo, glm::dvec3(p));
-      b.hi = glm::max(b.hi, glm::dvec3(p));
-    }
+  for (const glm::vec3& p : mesh.positions) extend(b, glm::dvec3(p));
+  return {b.lo, b.hi};
+}
+
+// World bounds of the meshes this frame: each mesh's box corners through its transform.
+Bounds world_bounds(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& meshes,
+                    const std::vector<glm::mat4>& transforms) {
+  Bounds b;
+  for (size_t m = 0; m < meshes.size(); ++m) {
+    const Bounds local{meshes[m].first, meshes[m].second};
+    if (local.empty()) continue;
+    const glm::dmat4 model = transforms.empty() ? glm::dmat4(1.0) : glm::dmat4(transforms[m]);
+    for (int k = 0; k < 8; ++k) extend(b, glm::dvec3(model * glm::dvec4(local.corner(k), 1.0)));
+  }
   return b;
 }
 
 // Far plane of a light's perspective maps: beyond every occluder. The near plane
 // at 1e-4 of it loses only occluders within millimetres of the light.
-struct DepthRange {
+struct NearFar {
   double near, far;
 };
-DepthRange perspective_range(const glm::dvec3& apex, const Bounds& b) {
+NearFar perspective_range(const glm::dvec3& apex, const Bounds& b) {
   double far = 0.0;
   for (int k = 0; k < 8; ++k) far = std::max(far, glm::length(b.corner(k) - apex));
   far = far * 1.01 + 1e-3;
@@ -104,7 +99,7 @@ struct Projection {
 // A spot's cone in a square perspective map of field 2·cone.
 Projection spot_projection(const Light& light, const Bounds& b) {
   const glm::dvec3 apex(light.position), axis = glm::normalize(glm::dvec3(light.direction));
-  const DepthRange range = perspective_range(apex, b);
+  const NearFar range = perspective_range(apex, b);
   const double cone = radians(light.cone_deg);
   const glm::dmat4 view = glm::lookAt(apex, apex + axis, up_hint(axis));
   const glm::dmat4 proj = glm::perspective(2.0 * cone, 1.0, range.near, range.far);
@@ -152,13 +147,14 @@ std::array<glm::mat4, 6> cube_face_matrices(const glm::dvec3& apex, const Bounds
                                                                         {{0, -1, 0}, {0, 0, -1}},
                                                                         {{0, 0, 1}, {0, -1, 0}},
                                                                         {{0, 0, -1}, {0, -1, 0}}}};
-  const DepthRange range = perspective_range(apex, b);
+  const NearFar range = perspective_range(apex, b);
   const glm::dmat4 proj = glm::perspective(0.5 * std::numbers::pi, 1.0, range.near, range.far);
   std::array<glm::mat4, 6> matrices;
   for (int f = 0; f < 6; ++f)
     matrices[f] = glm::mat4(proj * glm::lookAt(apex, apex + faces[f].first, faces[f].second));
   return matrices;
 }
+
 
 int shadow_kind(const Light& light, const Bounds& bounds) {
   if (bounds.empty()) return shadow_none;  // nothing can occlude
@@ -167,30 +163,60 @@ int shadow_kind(const Light& light, const Bounds& bounds) {
   return shadow_map;
 }
 
+// The kind an engine's map gives a light, or the one airlight would draw.
+int shadow_kind(const Light& light, const Bounds& bounds, const EngineShadow* engine) {
+  if (!engine) return shadow_kind(light, bounds);
+  return engine->kind == EngineShadow::Kind::cube ? shadow_cube : shadow_map;
+}
+
 // The lights whose gobo the GPU samples: spots and beams (a gobo means nothing elsewhere).
 bool has_gobo(const Light& light) {
   return (light.type == LightType::spot || optics::has_beam(light)) && light.gobo && !light.gobo->empty();
 }
 
-GpuLight light_record(const Light& light, int gobo_layer) {
-  GpuLight g{};
+SceneLight light_record(const Light& light, int gobo_layer) {
+  SceneLight g{};
   const double cone = radians(light.cone_deg);
-  const glm::vec3 dir = glm::normalize(light.direction);
   const bool spot = light.type == LightType::spot, beam = optics::has_beam(light);
-  g.position = glm::vec4(light.position, spot ? static_cast<float>(cone) : 0.0f);
-  if (beam) g.position = glm::vec4(light.beam->origin, light.beam->length);
-  g.direction = glm::vec4(dir, spot ? static_cast<float>(radians(light.edge_deg)) : 0.0f);
-  const glm::vec3 color = light.type == LightType::directional ? light.irradiance : light.intensity;
+  g.position = beam ? light.beam->origin : light.position;
+  g.cone = spot ? static_cast<float>(cone) : 0.0f;
+  g.direction = glm::normalize(light.direction);
+  g.edge = spot ? static_cast<float>(radians(light.edge_deg)) : 0.0f;
+  g.color = light.type == LightType::directional ? light.irradiance : light.intensity;
   const bool square = spot && cone < 0.5 * std::numbers::pi;  // gobo_uv needs tan(cone) finite
-  g.color = glm::vec4(color, square ? static_cast<float>(std::tan(cone)) : 0.0f);
+  g.tan_cone = square ? static_cast<float>(std::tan(cone)) : 0.0f;
   if (spot || beam) {
     glm::dvec3 right, up;
     optics::gobo_frame(light, right, up);
-    g.gobo_right = glm::vec4(glm::vec3(right), beam ? light.beam->size.x : 0.0f);
-    g.gobo_up = glm::vec4(glm::vec3(up), beam ? light.beam->size.y : 0.0f);
+    g.gobo_right = glm::vec3(right);
+    g.gobo_up = glm::vec3(up);
   }
-  g.meta = glm::ivec4(static_cast<int>(light.type), shadow_none, 0, gobo_layer);
+  if (beam) {
+    g.beam_width = light.beam->size.x;
+    g.beam_height = light.beam->size.y;
+    g.beam_length = light.beam->length;
+  }
+  g.type = static_cast<int>(light.type);
+  g.shadow_kind = shadow_none;
+  g.gobo_layer = gobo_layer;
   return g;
+}
+
+// A shadow texel's world size at distance r is (per_distance·r + constant) /
+// resolution: read off an engine's projection (perspective: 2/P₁₁ at unit
+// distance; orthographic: 2/P₁₁ everywhere), the larger of the two axes.
+Projection engine_projection(const EngineShadow& e) {
+  const glm::mat4& p = e.projection;
+  const float across = 2.0f / std::max(std::min(std::abs(p[0][0]), std::abs(p[1][1])), 1e-30f);
+  const bool perspective = p[3][3] == 0.0f;
+  return {p * e.view, perspective ? across : 0.0f, perspective ? 0.0f : across};
+}
+
+// The window depth a projection gives its far plane (1, or 0 under reversed-Z):
+// where an engine cleared its depth buffer, no surface or occluder was drawn.
+float far_window_depth(const glm::mat4& projection) {
+  const glm::vec4 near = projection * glm::vec4(0, 0, -1, 1), further = projection * glm::vec4(0, 0, -2, 1);
+  return further.z / further.w < near.z / near.w ? 0.0f : 1.0f;
 }
 
 // ---- textures -----------------------------------------------------------------
@@ -221,7 +247,28 @@ void check_complete(const Framebuffer& fbo, const char* what) {
 
 template <typename T>
 Buffer storage(const std::vector<T>& data) {
-  return make_buffer(data.size() * sizeof(T), data.data());
+  return make_buffer(std::max<size_t>(data.size(), 1) * sizeof(T), data.empty() ? nullptr : data.data());
+}
+
+const Program& frame_program(const char* vertex, const char* fragment) {
+  return cached_program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, frame_defines());
+}
+
+// ---- checks of a frame's inputs against the prepared scene (before any GL work) ----
+
+void check_inputs(const FrameInputs& in, const Scene& scene, const std::vector<const Image*>& gobos) {
+  if (in.width <= 0 || in.height <= 0 || in.width > 16384 || in.height > 16384)
+    throw InputError("frame", "size",
+                     "must be 1 to 16384 pixels per side, got " + std::to_string(in.width) + "x" +
+                         std::to_string(in.height));
+  if (!in.transforms.empty() && in.transforms.size() != scene.meshes.size())
+    throw InputError("frame", "transforms",
+                     "needs one per mesh (" + std::to_string(scene.meshes.size()) + "), got " +
+                         std::to_string(in.transforms.size()));
+  for (size_t i = 0; i < in.lights.size(); ++i)
+    if (has_gobo(in.lights[i]) && std::find(gobos.begin(), gobos.end(), in.lights[i].gobo.get()) == gobos.end())
+      throw InputError("frame", "lights[" + std::to_string(i) + "].gobo",
+                       "is not a gobo of the prepared scene's lights (gobos are uploaded at prepare)");
 }
 
 }  // namespace
@@ -231,10 +278,12 @@ std::string frame_defines() {
   const std::pair<const char*, GLuint> all[] = {
       {"FRAME_BLOCK", frame_block},   {"LIGHTS", lights},
       {"VOLUMES", volumes},           {"LOBES", lobes},
-      {"FACE_NORMALS", face_normals}, {"DISTANCE", distance},
-      {"NORMAL", normal},             {"GEOMETRIC_NORMAL", geometric_normal},
-      {"ALBEDO", albedo},             {"GOBOS", gobos},
-      {"SHADOW_MAPS", shadow_maps},   {"SHADOW_CUBES", shadow_cubes}};
+      {"FACE_NORMALS", face_normals}, {"OBJECTS", objects},
+      {"DISTANCE", distance},         {"NORMAL", normal},
+      {"GEOMETRIC_NORMAL", geometric_normal}, {"ALBEDO", albedo},
+      {"GOBOS", gobos},               {"SHADOW_MAPS", shadow_maps},
+      {"SHADOW_CUBES", shadow_cubes}, {"ENGINE_INPUT", engine_input},
+      {"FIRST_FREE_TEXTURE", first_free_texture}};
   std::string text;
   for (const auto& [name, value] : all)
     text += "#define BINDING_" + std::string(name) + " " + std::to_string(value) + "\n";
@@ -244,39 +293,33 @@ std::string frame_defines() {
 // ---- prepare --------------------------------------------------------------------
 
 void SceneFrame::prepare(const Scene& scene) {
-  const std::string defines = frame_defines();
-  programs_.gbuffer = make_program(
-      {{GL_VERTEX_SHADER, "methods/kit/gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/gbuffer.frag.glsl"}}, defines);
-  programs_.background = make_program(
-      {{GL_VERTEX_SHADER, "methods/kit/fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/background.frag.glsl"}}, defines);
-  programs_.shadow = make_program(
-      {{GL_VERTEX_SHADER, "methods/kit/shadow.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/shadow.frag.glsl"}}, defines);
-  programs_.surface = make_compute_program("methods/kit/surface.comp.glsl", defines);
-  programs_.composite = make_compute_program("methods/kit/composite.comp.glsl", defines);
-  camera_ = scene.camera;
-  geometry::camera_frame(camera_);  // throws now for a degenerate camera
-  light_model_ = scene.light_model;
+  geometry::camera_basis(scene.camera);  // throws now for a degenerate camera
+  scene_ = scene;
   upload_meshes(scene);
-  upload_media(scene);
   upload_gobos(scene);
-  upload_lights(scene);
-  frame_block_ = make_buffer(sizeof(FrameBlock), nullptr);
+  frame_block_ = make_buffer(sizeof(FrameData), nullptr);
   gbuffer_fbo_ = make_framebuffer();
   shadow_fbo_ = make_framebuffer();
-  width_ = height_ = shadow_resolution_ = 0;
+  nearest_ = gpu::make_nearest_sampler();
+  inputs_ = FrameInputs{};
+  shadow_layout_ = {};
+  shadow_resolution_ = 0;
 }
 
 // One vertex buffer and one index buffer for all meshes, so that one draw covers
-// the scene and gl_PrimitiveID indexes the per-triangle face normals.
+// the scene and gl_PrimitiveID indexes the per-triangle face normals (in object
+// space; gbuffer.frag.glsl turns them with the object).
 void SceneFrame::upload_meshes(const Scene& scene) {
   std::vector<Vertex> vertices;
   std::vector<GLuint> indices;
   std::vector<glm::vec4> face_normals;
+  mesh_bounds_.clear();
   for (const Mesh& mesh : scene.meshes) {
     const auto base = static_cast<GLuint>(vertices.size());
+    const auto object = static_cast<GLint>(mesh_bounds_.size());
     const bool normals = mesh.normals.size() == mesh.positions.size();
     for (size_t v = 0; v < mesh.positions.size(); ++v)
-      vertices.push_back({mesh.positions[v], normals ? mesh.normals[v] : glm::vec3(0.0f), mesh.albedo});
+      vertices.push_back({mesh.positions[v], normals ? mesh.normals[v] : glm::vec3(0.0f), mesh.albedo, object});
     for (const glm::uvec3& t : mesh.triangles) {
       indices.insert(indices.end(), {base + t.x, base + t.y, base + t.z});
       const glm::dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
@@ -284,6 +327,7 @@ void SceneFrame::upload_meshes(const Scene& scene) {
       const double length = glm::length(n);
       face_normals.emplace_back(glm::vec3(length > 0.0 ? n / length : n), 0.0f);
     }
+    mesh_bounds_.push_back(mesh_bounds(mesh));
   }
   index_count_ = static_cast<int>(indices.size());
   vertices_ = storage(vertices);
@@ -299,111 +343,134 @@ void SceneFrame::upload_meshes(const Scene& scene) {
     glVertexArrayAttribFormat(vao, attribute, 3, GL_FLOAT, GL_FALSE, offsets[attribute]);
     glVertexArrayAttribBinding(vao, attribute, 0);
   }
-}
-
-// The medium's lobes first (lobes[0 .. medium_lobes)), then each volume's.
-void SceneFrame::upload_media(const Scene& scene) {
-  std::vector<GpuLobe> lobes;
-  auto append = [&](const Phase& phase) {
-    const glm::ivec4 range(static_cast<int>(lobes.size()), static_cast<int>(phase.lobes.size()), 0, 0);
-    for (const PhaseLobe& l : phase.lobes) lobes.push_back({static_cast<int>(l.type), l.g, l.weight, 0.0f});
-    return range;
-  };
-  medium_lobes_ = append(scene.medium.phase).y;
-  std::vector<GpuVolume> volumes;
-  for (const Volume& v : scene.volumes)
-    volumes.push_back({glm::vec4(v.min, 0.0f), glm::vec4(v.max, 0.0f), glm::vec4(v.sigma_s, 0.0f),
-                       glm::vec4(v.sigma_t(), 0.0f), append(v.phase)});
-  volume_count_ = static_cast<int>(volumes.size());
-  medium_sigma_s_ = glm::vec4(scene.medium.sigma_s, 0.0f);
-  medium_sigma_t_ = glm::vec4(scene.medium.sigma_t(), 0.0f);
-  ambient_ = glm::vec4(scene.ambient, 0.0f);
-  lobes_ = storage(lobes);
-  volumes_ = storage(volumes);
+  glEnableVertexArrayAttrib(vao, 3);
+  glVertexArrayAttribIFormat(vao, 3, 1, GL_INT, offsetof(Vertex, object));
+  glVertexArrayAttribBinding(vao, 3, 0);
 }
 
 // One RGBA32F array layer per spot or beam with a gobo, at the largest gobo's size.
 void SceneFrame::upload_gobos(const Scene& scene) {
+  gobo_images_.clear();
+  for (const Light& light : scene.lights)
+    if (has_gobo(light) && std::find(gobo_images_.begin(), gobo_images_.end(), light.gobo.get()) == gobo_images_.end())
+      gobo_images_.push_back(light.gobo.get());
   const Image* largest = nullptr;
-  int layers = 0;
-  for (const Light& light : scene.lights)
-    if (has_gobo(light)) {
-      ++layers;
-      if (!largest || light.gobo->pixels.size() > largest->pixels.size()) largest = light.gobo.get();
-    }
+  for (const Image* gobo : gobo_images_)
+    if (!largest || gobo->pixels.size() > largest->pixels.size()) largest = gobo;
   const int w = largest ? largest->width : 1, h = largest ? largest->height : 1;
-  gobos_ = make_texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, w, h, std::max(layers, 1));
-  int layer = 0;
-  for (const Light& light : scene.lights)
-    if (has_gobo(light)) {
-      const std::vector<glm::vec4> texels = gobo_texels(*light.gobo, w, h);
-      glTextureSubImage3D(gobos_.id(), 0, 0, 0, layer++, w, h, 1, GL_RGBA, GL_FLOAT, texels.data());
-    }
+  gobos_ = make_texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, w, h, std::max(static_cast<int>(gobo_images_.size()), 1));
+  for (size_t layer = 0; layer < gobo_images_.size(); ++layer) {
+    const std::vector<glm::vec4> texels = gobo_texels(*gobo_images_[layer], w, h);
+    glTextureSubImage3D(gobos_.id(), 0, 0, 0, static_cast<GLint>(layer), w, h, 1, GL_RGBA, GL_FLOAT, texels.data());
+  }
 }
 
-// Light records with their shadow-map kind, slot and projection.
-void SceneFrame::upload_lights(const Scene& scene) {
-  const Bounds bounds = scene_bounds(scene);
-  std::vector<GpuLight> records;
+// ---- a frame's inputs -----------------------------------------------------------
+
+void SceneFrame::upload_inputs(const FrameSettings& settings, const EngineFrame* engine) {
+  std::vector<ObjectTransform> objects;
+  for (size_t m = 0; m < scene_.meshes.size(); ++m) {
+    const glm::mat4 model = inputs_.transforms.empty() ? glm::mat4(1.0f) : inputs_.transforms[m];
+    objects.push_back({model, glm::transpose(glm::inverse(model))});
+  }
+  objects_ = storage(objects);
+  upload_medium();
+  upload_lights(engine, settings.shadow_resolution);
+  update_frame_block(settings);
+}
+
+// The frame's medium lobes first (lobes[0 .. medium_lobes)), then each volume's.
+void SceneFrame::upload_medium() {
+  std::vector<SceneLobe> lobes;
+  auto append = [&](const Phase& phase) {
+    const int first = static_cast<int>(lobes.size());
+    for (const PhaseLobe& l : phase.lobes) lobes.push_back({static_cast<int>(l.type), l.g, l.weight, 0.0f});
+    return first;
+  };
+  append(inputs_.medium.phase);
+  std::vector<SceneVolume> volumes;
+  for (const Volume& v : scene_.volumes) {
+    const int first = append(v.phase);
+    volumes.push_back({v.min, first, v.max, static_cast<int>(v.phase.lobes.size()), v.sigma_s, 0.0f, v.sigma_t(), 0.0f});
+  }
+  lobes_ = storage(lobes);
+  volumes_ = storage(volumes);
+}
+
+// Light records with their shadow-map kind, slot and projection: airlight's
+// own, or those of the engine's map, converted into airlight's layer.
+void SceneFrame::upload_lights(const EngineFrame* engine, int resolution) {
+  const Bounds bounds = world_bounds(mesh_bounds_, inputs_.transforms);
+  std::vector<SceneLight> records;
   shadow_draws_.clear();
-  shadow_layout_ = {};
-  int gobo_layer = 0;
-  for (const Light& light : scene.lights) {
-    const int light_index = static_cast<int>(records.size());
-    GpuLight g = light_record(light, has_gobo(light) ? gobo_layer++ : -1);
-    g.meta.y = shadow_kind(light, bounds);
-    if (g.meta.y == shadow_cube) {
-      g.meta.z = shadow_layout_.cubes++;
-      g.shadow = glm::vec4(2.0f, 0.0f, 0.0f, 0.0f);  // a 90° face: 2 units across at unit distance
+  ShadowLayout layout;
+  for (const Light& light : inputs_.lights) {
+    const int index = static_cast<int>(records.size());
+    const EngineShadow* theirs =
+        engine && index < static_cast<int>(engine->shadows.size()) && engine->shadows[index] ? &*engine->shadows[index]
+                                                                                              : nullptr;
+    const auto gobo = std::find(gobo_images_.begin(), gobo_images_.end(), light.gobo.get());
+    SceneLight g = light_record(light, has_gobo(light) ? static_cast<int>(gobo - gobo_images_.begin()) : -1);
+    g.shadow_kind = shadow_kind(light, bounds, theirs);
+    if (g.shadow_kind == shadow_cube) {
+      g.shadow_layer = layout.cubes++;
+      g.texel_per_distance = 2.0f;  // a 90° face: 2 units across at unit distance
       const auto faces = cube_face_matrices(glm::dvec3(light.position), bounds);
-      for (int f = 0; f < 6; ++f) shadow_draws_.push_back({light_index, true, 6 * g.meta.z + f, faces[f]});
-    } else if (g.meta.y == shadow_map) {
-      g.meta.z = shadow_layout_.maps++;
-      const Projection p = light.type == LightType::directional ? directional_projection(light, bounds)
-                                                                  : spot_projection(light, bounds);
+      for (int f = 0; f < 6; ++f) shadow_draws_.push_back({index, true, 6 * g.shadow_layer + f, faces[f], theirs});
+    } else if (g.shadow_kind == shadow_map) {
+      g.shadow_layer = layout.maps++;
+      const Projection p = theirs ? engine_projection(*theirs)
+                           : light.type == LightType::directional ? directional_projection(light, bounds)
+                                                                   : spot_projection(light, bounds);
       g.shadow_matrix = p.matrix;
-      g.shadow = glm::vec4(p.per_distance, p.constant, 0.0f, 0.0f);
-      shadow_draws_.push_back({light_index, false, g.meta.z, p.matrix});
+      g.texel_per_distance = p.per_distance;
+      g.texel_constant = p.constant;
+      shadow_draws_.push_back({index, false, g.shadow_layer, p.matrix, theirs});
     }
     records.push_back(g);
   }
-  light_count_ = static_cast<int>(records.size());
   lights_ = storage(records);
+  if (!(layout == shadow_layout_) || resolution != shadow_resolution_) allocate_shadow_maps(layout, resolution);
 }
 
 // ---- render ---------------------------------------------------------------------
 
-void SceneFrame::render(int width, int height, const FrameSettings& settings, PassTimer& timer) {
-  if (width <= 0 || height <= 0) throw Failure("the image size must be positive");
-  resize(width, height);
-  if (settings.shadow_resolution != shadow_resolution_) allocate_shadow_maps(settings.shadow_resolution);
-  update_frame_block(settings);
+void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine,
+                        bool surface, PassTimer& timer) {
+  check_inputs(inputs, scene_, gobo_images_);
+  geometry::camera_basis(inputs.camera);  // throws for a degenerate camera
+  resize(inputs.width, inputs.height);
+  inputs_ = inputs;
+  upload_inputs(settings, engine);
   bind();
   {
-    ScopedPass pass(timer, "gbuffer");
-    draw_gbuffer();
+    ScopedPass pass(timer, engine && engine->depth ? "depth" : "gbuffer");
+    if (engine && engine->depth)
+      import_depth(*engine->depth);
+    else
+      draw_gbuffer();
   }
   {
     ScopedPass pass(timer, "shadow");
     draw_shadow_maps();
   }
-  {
+  if (surface) {
     ScopedPass pass(timer, "surface");
     shade_surfaces();
+  } else {
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(surface_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   }
 }
 
 void SceneFrame::resize(int width, int height) {
-  if (width == width_ && height == height_) return;
-  width_ = width;
-  height_ = height;
+  if (distance_ && width == inputs_.width && height == inputs_.height) return;
   distance_ = render_target(GL_R32F, width, height);
   normal_ = render_target(GL_RGBA32F, width, height);
   geometric_normal_ = render_target(GL_RGBA32F, width, height);
   albedo_ = render_target(GL_RGBA32F, width, height);
   depth_ = render_target(GL_DEPTH_COMPONENT32F, width, height);
   surface_ = render_target(GL_RGBA32F, width, height);
-  composite_ = render_target(GL_RGBA32F, width, height);
   const GLuint fbo = gbuffer_fbo_.id();
   const GLuint colours[] = {distance_.id(), normal_.id(), geometric_normal_.id(), albedo_.id()};
   GLenum buffers[4];
@@ -417,9 +484,10 @@ void SceneFrame::resize(int width, int height) {
 }
 
 // Unused kinds get a 1×1 texture so that every sampler stays bound and valid.
-void SceneFrame::allocate_shadow_maps(int resolution) {
+void SceneFrame::allocate_shadow_maps(const ShadowLayout& layout, int resolution) {
+  shadow_layout_ = layout;
   shadow_resolution_ = resolution;
-  const int maps = shadow_layout_.maps, cubes = shadow_layout_.cubes;
+  const int maps = layout.maps, cubes = layout.cubes;
   const int map_size = maps ? resolution : 1, cube_size = cubes ? resolution : 1;
   shadow_maps_ = make_texture(GL_TEXTURE_2D_ARRAY, GL_R32F, map_size, map_size, std::max(maps, 1));
   shadow_cubes_ = make_texture(GL_TEXTURE_CUBE_MAP_ARRAY, GL_R32F, cube_size, cube_size, 6 * std::max(cubes, 1));
@@ -428,26 +496,37 @@ void SceneFrame::allocate_shadow_maps(int resolution) {
 }
 
 void SceneFrame::update_frame_block(const FrameSettings& settings) {
-  const geometry::CameraFrame f = geometry::camera_frame(camera_);
-  const double aspect = static_cast<double>(width_) / height_, t = f.tan_half_fov_y;
-  const double n = camera_.near, far = camera_.far;
+  const Camera& camera = inputs_.camera;
+  const geometry::CameraBasis f = geometry::camera_basis(camera);
+  const double aspect = static_cast<double>(inputs_.width) / inputs_.height, t = f.tan_half_fov_y;
+  const double n = camera.near, far = camera.far;
   // The frustum through the pixel grid of geometry::primary_ray: pixel centres
   // rasterize at (i + 0.5)/W of [-t·aspect, t·aspect] × [-t, t] on the unit plane.
   const glm::dmat4 proj = glm::frustum(-t * aspect * n, t * aspect * n, -t * n, t * n, n, far);
   const glm::dmat4 view = glm::lookAt(f.position, f.position + f.forward, f.up);
-  FrameBlock b{};
+  FrameData b{};
   b.view_projection = glm::mat4(proj * view);
-  b.eye = glm::vec4(glm::vec3(f.position), 1.0f);
-  b.forward = glm::vec4(glm::vec3(f.forward), 0.0f);
-  b.right = glm::vec4(glm::vec3(f.right), 0.0f);
-  b.up = glm::vec4(glm::vec3(f.up), 0.0f);
-  b.image = glm::vec4(width_, height_, t, aspect);
-  b.clip = glm::vec4(camera_.near, camera_.far, settings.shadow_bias, shadow_resolution_);
-  b.medium_sigma_s = medium_sigma_s_;
-  b.medium_sigma_t = medium_sigma_t_;
-  b.ambient = ambient_;
-  b.light_model = glm::vec4(light_model_.a0, light_model_.a1, 0.0f, 0.0f);
-  b.counts = glm::ivec4(light_count_, volume_count_, medium_lobes_, static_cast<int>(light_model_.type));
+  b.eye = glm::vec3(f.position);
+  b.near_plane = camera.near;
+  b.forward = glm::vec3(f.forward);
+  b.far_plane = camera.far;
+  b.right = glm::vec3(f.right);
+  b.tan_half_fov_y = static_cast<float>(t);
+  b.up = glm::vec3(f.up);
+  b.aspect = static_cast<float>(aspect);
+  b.medium_sigma_s = inputs_.medium.sigma_s;
+  b.shadow_bias = settings.shadow_bias;
+  b.medium_sigma_t = inputs_.medium.sigma_t();
+  b.shadow_resolution = static_cast<float>(shadow_resolution_);
+  b.ambient = scene_.ambient;
+  b.light_model_a0 = inputs_.light_model.a0;
+  b.size = glm::vec2(inputs_.width, inputs_.height);
+  b.light_model_a1 = inputs_.light_model.a1;
+  b.light_model = static_cast<int>(inputs_.light_model.type);
+  b.light_count = light_count();
+  b.volume_count = static_cast<int>(scene_.volumes.size());
+  b.medium_lobes = static_cast<int>(inputs_.medium.phase.lobes.size());
+  b.object_count = static_cast<int>(scene_.meshes.size());
   glNamedBufferSubData(frame_block_.id(), 0, sizeof(b), &b);
 }
 
@@ -457,6 +536,7 @@ void SceneFrame::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::volumes, volumes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::lobes, lobes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::face_normals, face_normals_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::objects, objects_.id());
   glBindTextureUnit(binding::distance, distance_.id());
   glBindTextureUnit(binding::normal, normal_.id());
   glBindTextureUnit(binding::geometric_normal, geometric_normal_.id());
@@ -464,26 +544,52 @@ void SceneFrame::bind() const {
   glBindTextureUnit(binding::gobos, gobos_.id());
   glBindTextureUnit(binding::shadow_maps, shadow_maps_.id());
   glBindTextureUnit(binding::shadow_cubes, shadow_cubes_.id());
+  for (GLuint unit = 0; unit < binding::first_free_texture; ++unit) glBindSampler(unit, 0);
 }
 
-// The far-plane background first (no depth test), then the meshes over it.
 void SceneFrame::draw_gbuffer() {
   // The G-buffer textures are the pass's outputs: unbind them as inputs meanwhile.
   for (GLuint unit : {binding::distance, binding::normal, binding::geometric_normal, binding::albedo})
     glBindTextureUnit(unit, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_fbo_.id());
-  glViewport(0, 0, width_, height_);
+  glViewport(0, 0, inputs_.width, inputs_.height);
   const float one = 1.0f;
   glClearNamedFramebufferfv(gbuffer_fbo_.id(), GL_DEPTH, 0, &one);
   glBindVertexArray(vertex_array_.id());
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(programs_.background.id());
+  glDisable(GL_DEPTH_TEST);  // the far-plane background first, then the meshes over it
+  glUseProgram(frame_program("methods/kit/fullscreen.vert.glsl", "methods/kit/background.frag.glsl").id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glUseProgram(programs_.gbuffer.id());
+  glUseProgram(frame_program("methods/kit/gbuffer.vert.glsl", "methods/kit/gbuffer.frag.glsl").id());
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
   glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  bind();
+}
+
+// The engine's depth buffer as airlight's G-buffer: eye distances, and window
+// depths of airlight's own projection for methods that depth-test (depth.frag.glsl).
+void SceneFrame::import_depth(const EngineDepth& depth) {
+  for (GLuint unit : {binding::distance, binding::normal, binding::geometric_normal, binding::albedo})
+    glBindTextureUnit(unit, 0);
+  const Program& program = frame_program("methods/kit/fullscreen.vert.glsl", "methods/kit/depth.frag.glsl");
+  const glm::mat4 view_projection = depth.projection * depth.view;
+  set_uniform(program, "engine_inverse_view_projection", glm::inverse(view_projection));
+  set_uniform(program, "engine_zero_to_one", depth.range == DepthRange::zero_to_one ? 1 : 0);
+  set_uniform(program, "engine_far_depth", far_window_depth(depth.projection));
+  glBindTextureUnit(binding::engine_input, depth.texture);
+  glBindSampler(binding::engine_input, nearest_.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_fbo_.id());
+  glViewport(0, 0, inputs_.width, inputs_.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);  // gl_FragDepth is written, not tested
+  glBindVertexArray(vertex_array_.id());
+  glUseProgram(program.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+  glBindSampler(binding::engine_input, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   bind();
 }
@@ -494,41 +600,62 @@ void SceneFrame::draw_shadow_maps() {
   glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_.id());
   glViewport(0, 0, shadow_resolution_, shadow_resolution_);
   glBindVertexArray(vertex_array_.id());
-  glUseProgram(programs_.shadow.id());
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  for (const ShadowDraw& d : shadow_draws_) draw_shadow_layer(d);
-  glDisable(GL_DEPTH_TEST);
+  for (const ShadowDraw& d : shadow_draws_) {
+    const GLuint texture = d.cube ? shadow_cubes_.id() : shadow_maps_.id();
+    glNamedFramebufferTextureLayer(shadow_fbo_.id(), GL_COLOR_ATTACHMENT0, texture, 0, d.layer);
+    check_complete(shadow_fbo_, "shadow map");
+    if (d.engine)
+      import_shadow_layer(d);
+    else
+      draw_shadow_layer(d);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   bind();
 }
 
 // One 2D map or cube face: cleared to FLT_MAX (no occluder: lit), then the scene.
 void SceneFrame::draw_shadow_layer(const ShadowDraw& d) {
-  const GLuint texture = d.cube ? shadow_cubes_.id() : shadow_maps_.id();
-  glNamedFramebufferTextureLayer(shadow_fbo_.id(), GL_COLOR_ATTACHMENT0, texture, 0, d.layer);
-  check_complete(shadow_fbo_, "shadow map");
   const float far[4] = {FLT_MAX, 0.0f, 0.0f, 0.0f}, one = 1.0f;
   glClearNamedFramebufferfv(shadow_fbo_.id(), GL_COLOR, 0, far);
   glClearNamedFramebufferfv(shadow_fbo_.id(), GL_DEPTH, 0, &one);
-  set_uniform(programs_.shadow, "light_view_projection", d.matrix);
-  set_uniform(programs_.shadow, "light_index", d.light);
+  const Program& program = frame_program("methods/kit/shadow.vert.glsl", "methods/kit/shadow.frag.glsl");
+  glUseProgram(program.id());
+  set_uniform(program, "light_view_projection", d.matrix);
+  set_uniform(program, "light_index", d.light);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+  glDisable(GL_DEPTH_TEST);
+}
+
+// One layer converted from the engine's map: each texel's stored depth turned
+// into the distance airlight's lookups compare with (shadow_import.frag.glsl).
+void SceneFrame::import_shadow_layer(const ShadowDraw& d) {
+  const EngineShadow& e = *d.engine;
+  const bool cube = e.kind == EngineShadow::Kind::cube;
+  const std::string defines = cube ? "#define ENGINE_CUBE\n" : e.layer >= 0 ? "#define ENGINE_ARRAY\n" : "";
+  const Program& program =
+      cached_program({{GL_VERTEX_SHADER, "methods/kit/fullscreen.vert.glsl"},
+                      {GL_FRAGMENT_SHADER, "methods/kit/shadow_import.frag.glsl"}},
+                     frame_defines() + defines);
+  glUseProgram(program.id());
+  set_uniform(program, "light_index", d.light);
+  set_uniform(program, "face", d.layer % 6);
+  set_uniform(program, "engine_layer", std::max(e.layer, 0));
+  set_uniform(program, "engine_distance", e.stores == EngineShadow::Stores::distance ? 1 : 0);
+  set_uniform(program, "engine_inverse_view_projection", glm::inverse(cube ? e.projection : d.matrix));
+  set_uniform(program, "engine_zero_to_one", e.range == DepthRange::zero_to_one ? 1 : 0);
+  set_uniform(program, "engine_far_depth", far_window_depth(e.projection));
+  glBindTextureUnit(binding::engine_input, e.texture);
+  glBindSampler(binding::engine_input, nearest_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(binding::engine_input, 0);
 }
 
 void SceneFrame::shade_surfaces() {
-  glUseProgram(programs_.surface.id());
+  glUseProgram(cached_compute_program("methods/kit/surface.comp.glsl", frame_defines()).id());
   glBindImageTexture(0, surface_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  dispatch_pixels(width_, height_);
-}
-
-void SceneFrame::composite(const Texture& airlight, PassTimer& timer) {
-  ScopedPass pass(timer, "composite");
-  glUseProgram(programs_.composite.id());
-  glBindImageTexture(0, composite_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindImageTexture(1, surface_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-  glBindImageTexture(2, airlight.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-  dispatch_pixels(width_, height_);
+  dispatch_pixels(inputs_.width, inputs_.height);
 }
 
 }  // namespace airlight::kit

@@ -1,21 +1,26 @@
 #pragma once
-// The shared frame (DESIGN §3 "the same shared inputs"): what every GPU method
-// receives — the scene uploaded once (meshes, lights, volumes, phase lobes,
-// gobos), and per frame a G-buffer (eye distance, normals, albedo), one shadow
-// map per light and the surface term L_surf·T(d) (the reference's surface pass,
-// src/reference/reference.cpp, on the GPU). Shaders reach it all through
-// src/methods/kit/scene.glsl at the binding points below.
+// The shared frame (docs/design.md §3): what every GPU method receives. At
+// prepare, what the scene fixes: meshes (in object space), bounded volumes,
+// gobos. Per frame, from FrameInputs: the camera, lights, medium and object
+// transforms, then a G-buffer (eye distance, normals, albedo), one shadow map
+// per light and the surface term L_surf·T(d) (the reference's surface pass,
+// src/reference/reference.cpp, on the GPU) — or, in an engine's frame, its
+// depth buffer and shadow maps converted to airlight's conventions. Shaders
+// reach it all through methods/kit/scene.glsl at the binding points below.
 //
-// Pixels follow geometry::primary_ray (DESIGN §5): GL's bottom-left origin, so
+// Pixels follow geometry::primary_ray (docs/design.md §5): GL's bottom-left origin, so
 // GL row y is image row H−1−y; read_image() flips back to top row first.
 #include "gpu/gl.hpp"
 #include "gpu/timer.hpp"
 
+#include <airlight/engine.hpp>
 #include <airlight/image.hpp>
+#include <airlight/method.hpp>
 #include <airlight/scene.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace airlight::kit {
@@ -36,6 +41,7 @@ inline constexpr GLuint lights = 0;          // SSBO SceneLight[] (std430)
 inline constexpr GLuint volumes = 1;         // SSBO SceneVolume[]
 inline constexpr GLuint lobes = 2;           // SSBO PhaseLobe[] (medium's, then each volume's)
 inline constexpr GLuint face_normals = 3;    // SSBO vec4[] per triangle (G-buffer pass only)
+inline constexpr GLuint objects = 4;         // SSBO ObjectTransform[] per mesh (G-buffer and shadow passes)
 inline constexpr GLuint first_free_storage = 8;
 inline constexpr GLuint distance = 0;        // sampler2D R32F: eye distance along the pixel ray
 inline constexpr GLuint normal = 1;          // sampler2D RGBA32F: shading normal, facing the eye
@@ -44,6 +50,7 @@ inline constexpr GLuint albedo = 3;          // sampler2D RGBA32F: rgb albedo, a
 inline constexpr GLuint gobos = 4;           // sampler2DArray RGBA32F, one layer per gobo
 inline constexpr GLuint shadow_maps = 5;     // sampler2DArray R32F, one layer per 2D shadow map
 inline constexpr GLuint shadow_cubes = 6;    // samplerCubeArray R32F, one cube per point / wide spot
+inline constexpr GLuint engine_input = 7;    // an engine's depth or shadow texture while it is converted
 inline constexpr GLuint first_free_texture = 8;
 }  // namespace binding
 
@@ -62,78 +69,81 @@ inline constexpr float wide_spot_deg = 60.0f;
 
 class SceneFrame {
 public:
-  // Uploads the scene; needs a current GL context. Gobos of different sizes are
-  // resampled (bilinearly, by optics::sample_gobo) to the largest one's size so
-  // that they share one texture array; same-sized gobos are uploaded exactly.
+  // Uploads what the scene fixes; needs a current GL context. Gobos of
+  // different sizes are resampled (bilinearly, by optics::sample_gobo) to the
+  // largest one's size so that they share one texture array; same-sized gobos
+  // are uploaded exactly.
   void prepare(const Scene& scene);
 
-  // G-buffer ("gbuffer"), shadow maps ("shadow") and surface shading ("surface"),
-  // each timed under that name.
-  void render(int width, int height, const FrameSettings& settings, PassTimer& timer);
-
-  // L = surface + airlight into composite_target(), timed as "composite";
-  // `airlight` is RGBA32F of the frame's size. (Not run by GpuMethod::render:
-  // for the viewer, which shows L on screen.)
-  void composite(const Texture& airlight, PassTimer& timer);
+  // One frame: uploads `inputs`, then the G-buffer ("gbuffer", or "depth" from
+  // the engine's depth buffer), the shadow maps ("shadow": drawn, or converted
+  // from the engine's) and, when `surface`, the surface shading ("surface"),
+  // each timed under that name. Throws InputError for inputs that do not fit
+  // the prepared scene, before any GL work.
+  void render(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine, bool surface,
+              PassTimer& timer);
 
   // Binds the frame block, the scene SSBOs and the textures to binding::*.
   void bind() const;
 
-  int width() const { return width_; }
-  int height() const { return height_; }
-  int light_count() const { return light_count_; }
+  // This frame's inputs and the scene as it was prepared.
+  const FrameInputs& inputs() const { return inputs_; }
+  const Scene& scene() const { return scene_; }
+  int width() const { return inputs_.width; }
+  int height() const { return inputs_.height; }
+  int light_count() const { return static_cast<int>(inputs_.lights.size()); }
   const Texture& distance() const { return distance_; }
-  // DEPTH_COMPONENT32F of the G-buffer pass (cleared to 1 where no surface is
-  // hit), for methods that rasterize with the depth test against the scene.
+  // DEPTH_COMPONENT32F of the G-buffer pass (1 where no surface is hit), for
+  // methods that rasterize with the depth test against the scene.
   const Texture& depth() const { return depth_; }
-  const Texture& normal() const { return normal_; }
-  const Texture& albedo() const { return albedo_; }
+  const Texture& albedo() const { return albedo_; }  // rgb albedo, a = 1 where a surface is hit
   const Texture& surface() const { return surface_; }
-  const Texture& composite_target() const { return composite_; }
 
 private:
-  struct Programs {
-    Program gbuffer, background, shadow, surface, composite;
-  };
   struct ShadowLayout {  // how many 2D maps and cube maps the lights use
     int maps = 0, cubes = 0;
+    bool operator==(const ShadowLayout&) const = default;
   };
   struct ShadowDraw {  // one 2D map or one cube face of a light
     int light = 0;
     bool cube = false;
     int layer = 0;  // array layer (2D), or 6·cube + face
     glm::mat4 matrix{1.0f};
+    const EngineShadow* engine = nullptr;  // converted from the engine's map instead of drawn
   };
 
   void upload_meshes(const Scene& scene);
-  void upload_media(const Scene& scene);
-  void upload_lights(const Scene& scene);
+  void upload_volumes(const Scene& scene);
   void upload_gobos(const Scene& scene);
+  void upload_inputs(const FrameSettings& settings, const EngineFrame* engine);
+  void upload_medium();
+  void upload_lights(const EngineFrame* engine, int resolution);
   void resize(int width, int height);
-  void allocate_shadow_maps(int resolution);
+  void allocate_shadow_maps(const ShadowLayout& layout, int resolution);
   void update_frame_block(const FrameSettings& settings);
   void draw_gbuffer();
+  void import_depth(const EngineDepth& depth);
   void draw_shadow_maps();
   void draw_shadow_layer(const ShadowDraw& draw);
+  void import_shadow_layer(const ShadowDraw& draw);
   void shade_surfaces();
 
-  Programs programs_;
-  Camera camera_;
-  LightModel light_model_;
+  Scene scene_;  // as prepared, meshes in object space
+  FrameInputs inputs_;
   std::vector<ShadowDraw> shadow_draws_;
   ShadowLayout shadow_layout_;
-  int light_count_ = 0, volume_count_ = 0, medium_lobes_ = 0;
-  glm::vec4 medium_sigma_s_{0.0f}, medium_sigma_t_{0.0f}, ambient_{0.0f};
-  int index_count_ = 0;
-  int width_ = 0, height_ = 0, shadow_resolution_ = 0;
+  std::vector<const Image*> gobo_images_;  // per gobo layer
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> mesh_bounds_;  // per mesh: object-space lo, hi
+  int index_count_ = 0, shadow_resolution_ = 0;
 
   VertexArray vertex_array_;
-  Buffer vertices_, indices_, face_normals_;
+  Buffer vertices_, indices_, face_normals_, objects_;
   Buffer frame_block_, lights_, volumes_, lobes_;
   Texture gobos_;
-  Texture distance_, normal_, geometric_normal_, albedo_, depth_, surface_, composite_;
+  Texture distance_, normal_, geometric_normal_, albedo_, depth_, surface_;
   Framebuffer gbuffer_fbo_, shadow_fbo_;
   Texture shadow_maps_, shadow_cubes_, shadow_depth_;
+  gpu::Sampler nearest_;  // reads engine textures as stored, whatever their parameters
 };
 
 }  // namespace airlight::kit

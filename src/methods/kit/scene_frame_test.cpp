@@ -1,6 +1,7 @@
-// The shared frame (src/gpu/frame.hpp) against the CPU: the G-buffer distance
+// The shared frame (methods/kit/scene_frame.hpp) against the CPU: the G-buffer distance
 // against the analytic ray hit, the surface pass against reference::render.
 #include "gpu/context.hpp"
+#include "gpu/program.hpp"
 #include "methods/kit/scene_frame.hpp"
 
 #include "geometry/camera.hpp"
@@ -13,7 +14,7 @@
 #include <cstdio>
 #include <memory>
 
-namespace airlight::gpu {
+namespace airlight::kit {
 namespace {
 
 constexpr int width = 128, height = 96;
@@ -36,13 +37,13 @@ struct Rendered {
 };
 
 Rendered render_frame(const Scene& scene, int w = width, int h = height, FrameSettings settings = {}) {
-  Context& context = Context::headless();
+  gpu::Context& context = gpu::Context::headless();
   SceneFrame frame;
   frame.prepare(scene);
   PassTimer timer;
-  frame.render(w, h, settings, timer);
+  frame.render(frame_inputs(scene, w, h), settings, nullptr, true, timer);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
-  Rendered r{read_image(frame.distance(), w, h), read_image(frame.surface(), w, h), read_image(frame.albedo(), w, h)};
+  Rendered r{gpu::read_image(frame.distance(), w, h), gpu::read_image(frame.surface(), w, h), gpu::read_image(frame.albedo(), w, h)};
   const auto times = timer.results();
   EXPECT_EQ(times.size(), 3u);
   context.check("frame_test");
@@ -152,7 +153,7 @@ double mismatched_fraction(const Image& m, const Image& r) {
 // lit and shadowed through the shadow map's texels; everything else must agree).
 void expect_surface_close(const Scene& scene, double tolerance, double max_mismatched, const char* reason) {
   const Rendered gpu = render_frame(scene);
-  const reference::Frame cpu = reference::render(scene, width, height);
+  const reference::Images cpu = reference::render(scene, width, height);
   const double error = rel_rmse(gpu.surface, cpu.surface);
   const double mismatched = mismatched_fraction(gpu.surface, cpu.surface);
   std::printf("%s: surface rel. RMSE %.5f (bound %.3f), %.3f%% pixels off by > 1%% (bound %.2f%%)\n",
@@ -163,7 +164,7 @@ void expect_surface_close(const Scene& scene, double tolerance, double max_misma
 
 // ---- G-buffer -----------------------------------------------------------------
 
-TEST(Frame, GbufferDistanceIsTheRayHitOrTheFarPlane) {
+TEST(SceneFrame, GbufferDistanceIsTheRayHitOrTheFarPlane) {
   Scene s;
   s.camera.position = {0.3f, 2.0f, 6.0f};
   s.camera.look_at = {0.0f, 0.4f, 0.0f};
@@ -203,21 +204,21 @@ TEST(Frame, GbufferDistanceIsTheRayHitOrTheFarPlane) {
 // Shadow-edge pixels: at 128×96 a 1024² map's texel (a few cm on the floor)
 // flips 2–3 pixels of the teapot's shadow edge (they vanish at 8192²); each adds
 // ~1.5% to the RMSE because the image's mean radiance is low (mostly dark).
-TEST(Frame, SurfaceMatchesReferenceOnTeapotSpot) {
+TEST(SceneFrame, SurfaceMatchesReferenceOnTeapotSpot) {
   expect_surface_close(builtin_scene("teapot_spot"), 0.05, 0.001,
                        "2–3 shadow-edge pixels through the 1024² map's texels");
 }
 
-TEST(Frame, SurfaceMatchesReferenceOnBiriSphere) {
+TEST(SceneFrame, SurfaceMatchesReferenceOnBiriSphere) {
   expect_surface_close(builtin_scene("biri_sphere"), 0.02, 0.001, "the sphere's shadow edge through a 1024² map");
 }
 
-TEST(Frame, CubeShadowMapForAPointLight) {
+TEST(SceneFrame, CubeShadowMapForAPointLight) {
   expect_surface_close(shadow_scene(point_light({0.5f, 2.2f, 0.8f}, 30.0f)), 0.02, 0.003,
                        "shadow edges of the box and pillar through 1024² cube faces");
 }
 
-TEST(Frame, DirectionalLightOrthographicMapAndVolumeOnItsLeg) {
+TEST(SceneFrame, DirectionalLightOrthographicMapAndVolumeOnItsLeg) {
   Scene s = shadow_scene(directional_light({0.4f, -1.0f, -0.3f}, 2.0f));
   s.name = "directional";
   // A volume the light crosses on its way to the floor (DESIGN §1: the only
@@ -233,7 +234,7 @@ TEST(Frame, DirectionalLightOrthographicMapAndVolumeOnItsLeg) {
                        "(1.2 cm texels)");
 }
 
-TEST(Frame, SpotWithGoboAndSmoothEdge) {
+TEST(SceneFrame, SpotWithGoboAndSmoothEdge) {
   Light light = spot_light({-1.0f, 4.0f, 1.5f}, {0.3f, 0.0f, -0.5f}, 60.0f, 35.0f, 8.0f);
   light.gobo = test_gobo();
   Scene s = shadow_scene(light);
@@ -253,7 +254,7 @@ Light beam_light(const glm::vec3& direction) {
   return light;
 }
 
-TEST(Frame, BeamWithGoboOntoTheFloor) {
+TEST(SceneFrame, BeamWithGoboOntoTheFloor) {
   Scene s = shadow_scene(beam_light({0.3f, -1.0f, -0.2f}));
   s.name = "beam";
   // Only the beam's footprint is lit, so the image's mean is low and each
@@ -265,14 +266,14 @@ TEST(Frame, BeamWithGoboOntoTheFloor) {
   expect_surface_close(s, 0.15, 0.001, "2 pixels 2 mm inside the box's shadow edge, half a shadow-map texel");
 }
 
-TEST(Frame, WideSpotUsesACubeMap) {
+TEST(SceneFrame, WideSpotUsesACubeMap) {
   static_assert(wide_spot_deg < 75.0f);
   Scene s = shadow_scene(spot_light({0.3f, 3.0f, 1.0f}, {0.0f, 0.0f, -0.5f}, 40.0f, 75.0f, 10.0f));
   s.name = "wide_spot";
   expect_surface_close(s, 0.02, 0.003, "shadow edges through 1024² cube faces");
 }
 
-TEST(Frame, SimplifiedLightModel) {
+TEST(SceneFrame, SimplifiedLightModel) {
   // The pedestal's bottom cap is coplanar with the floor's top: where both are
   // visible (2 pixels at the foot of its silhouette) the depth test and Embree
   // pick different ones, lit floor against the cap whose shadow ray starts
@@ -281,7 +282,7 @@ TEST(Frame, SimplifiedLightModel) {
                        "2 pixels of coplanar floor and pedestal cap");
 }
 
-TEST(Frame, SeveralLightsAndAmbient) {
+TEST(SceneFrame, SeveralLightsAndAmbient) {
   Scene s = shadow_scene(point_light({-1.5f, 2.0f, 1.0f}, 15.0f));
   s.name = "three_lights";
   s.lights.push_back(spot_light({2.0f, 4.0f, 2.0f}, {0.0f, 0.0f, 0.0f}, 50.0f, 25.0f, 0.0f));
@@ -290,24 +291,5 @@ TEST(Frame, SeveralLightsAndAmbient) {
   expect_surface_close(s, 0.02, 0.005, "shadow edges of three lights' maps");
 }
 
-TEST(Frame, CompositeAddsSurfaceAndAirlight) {
-  Context& context = Context::headless();
-  const Scene scene = builtin_scene("teapot_spot");
-  SceneFrame frame;
-  frame.prepare(scene);
-  PassTimer timer;
-  frame.render(32, 24, {}, timer);
-  Texture airlight = make_texture(GL_TEXTURE_2D, GL_RGBA32F, 32, 24);
-  const float value[4] = {0.25f, 0.5f, 1.0f, 1.0f};
-  glClearTexImage(airlight.id(), 0, GL_RGBA, GL_FLOAT, value);
-  frame.composite(airlight, timer);
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
-  const Image surface = read_image(frame.surface(), 32, 24), composite = read_image(frame.composite_target(), 32, 24);
-  for (size_t i = 0; i < surface.pixels.size(); ++i)
-    EXPECT_EQ(composite.pixels[i], surface.pixels[i] + glm::vec3(0.25f, 0.5f, 1.0f));
-  EXPECT_EQ(timer.results().back().pass, "composite");
-  context.check("composite");
-}
-
 }  // namespace
-}  // namespace airlight::gpu
+}  // namespace airlight::kit

@@ -27,7 +27,7 @@ vec3 irradiance(int i, SurfacePoint s) {
 vec3 surface_radiance(SurfacePoint s) {
   vec3 e = vec3(0.0);
   for (int i = 0; i < light_count(); ++i) e += irradiance(i, s);
-  return s.albedo * (scene_ambient.rgb + e / PI);
+  return s.albedo * (frame.ambient + e / PI);
 }
 
 void main() {
@@ -37,10 +37,10 @@ void main() {
   vec3 radiance = vec3(0.0);
   if (albedo.a > 0.0) {
     vec3 dir = pixel_ray(vec2(pixel) + 0.5);
-    SurfacePoint s = SurfacePoint(frame_eye.xyz + surface_distance(pixel) * dir,
+    SurfacePoint s = SurfacePoint(frame.eye + surface_distance(pixel) * dir,
                                   texelFetch(gbuffer_geometric_normal, pixel, 0).xyz,
                                   texelFetch(gbuffer_normal, pixel, 0).xyz, albedo.rgb);
-    radiance = surface_radiance(s) * exp(-eye_leg_depth(frame_eye.xyz, s.position));
+    radiance = surface_radiance(s) * exp(-eye_leg_depth(frame.eye, s.position));
   }
   imageStore(surface_out, pixel, vec4(radiance, 1.0));
 }

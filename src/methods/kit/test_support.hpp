@@ -17,13 +17,13 @@
 
 namespace airlight::kit::test {
 
-inline Frame render(const MethodInfo& info, const Scene& scene, const std::vector<std::string>& assignments, int width,
+inline FrameImages render(const MethodInfo& info, const Scene& scene, const std::vector<std::string>& assignments, int width,
                     int height) {
   Settings settings(info.settings);
   for (const auto& a : assignments) settings.set(a, "test");
   auto method = info.create(settings);
   method->prepare(scene);
-  return method->render(width, height);
+  return airlight::render(*method, scene, width, height);
 }
 
 // The reference's airlight, rendered once per scene name and size in a process.

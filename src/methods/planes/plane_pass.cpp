@@ -78,7 +78,7 @@ void PlanePass::prepare(const Scene& scene) {
     glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
     invocations_ = gpu::Query(id);
   }
-  camera_ = geometry::camera_frame(scene.camera);
+  camera_ = geometry::camera_basis(scene.camera);
   far_ = scene.camera.far;
   const reference::RayCaster rays(scene);
   volumes_.clear();

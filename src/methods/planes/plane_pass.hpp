@@ -52,7 +52,7 @@ private:
   void draw_light(int light, const kit::LightBounds& volume);
 
   PlaneSettings settings_;
-  geometry::CameraFrame camera_;
+  geometry::CameraBasis camera_;
   double far_ = 0.0;
   float cos_edge_ = 1.0f;  // the smallest cos(ray, forward) in the image
   std::vector<kit::LightBounds> volumes_;

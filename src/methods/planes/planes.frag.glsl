@@ -37,8 +37,8 @@ struct Piece {
 Piece even_piece(vec2 t) { return Piece(t, 0.0, 0.0, 0.0, vec2(0.0)); }
 
 Piece angular_piece(vec3 light, vec3 eye, vec3 dir, vec2 t) {
-  float a0 = simplified_model() ? light_model_coeffs.x : 0.0;
-  float a1 = simplified_model() ? light_model_coeffs.y : 1.0;
+  float a0 = simplified_model() ? frame.light_model_a0 : 0.0;
+  float a1 = simplified_model() ? frame.light_model_a1 : 1.0;
   if (!(a1 > 0.0)) return even_piece(t);
   vec3 delta = light - eye;
   float foot = dot(delta, dir);
@@ -59,7 +59,7 @@ const int MAX_PIECE_SAMPLES = 64;
 int piece_samples(int i, Piece p, vec3 dir) {
   float n = 1.0;
   if (p.h > 0.0) n = (p.theta.y - p.theta.x) / MAX_SAMPLE_ANGLE;
-  else if (has_beam(i) && lights[i].meta.w >= 0) {
+  else if (has_beam(i) && lights[i].gobo_layer >= 0) {
     Beam b = light_beam(i);
     vec2 texels = vec2(textureSize(gobo_maps, 0).xy) / b.size;  // per metre across the beam
     vec2 across = abs(vec2(dot(dir, b.right), dot(dir, b.up))) * (p.t.y - p.t.x);
@@ -85,10 +85,10 @@ layout(location = 0) out vec4 airlight;
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec3 dir = pixel_ray(gl_FragCoord.xy);
-  float cos_axis = dot(dir, frame_forward.xyz);
+  float cos_axis = dot(dir, frame.forward);
   float z0 = float(plane) * dz;
   float z1 = min(z0 + dz, surface_distance(pixel) * cos_axis);
-  vec3 eye = frame_eye.xyz;
+  vec3 eye = frame.eye;
   // The slab's piece of the ray in front of the surface, cut to where the
   // light can arrive (a spot's cone, a beam's box): the sample never falls
   // outside a shaft that crosses the slab, so shafts keep their edges and thin
@@ -96,8 +96,8 @@ void main() {
   vec2 lit = lit_sampling ? lit_interval(light, eye, dir, z0 / cos_axis, z1 / cos_axis) : vec2(z0, z1) / cos_axis;
   if (!(lit.y > lit.x)) discard;
   float offset = jitter ? texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r : 0.5;
-  vec3 light_position = lights[light].position.xyz;
-  bool by_angle = lit_sampling && !lattice_xi && lights[light].meta.x != LIGHT_DIRECTIONAL;
+  vec3 light_position = lights[light].position;
+  bool by_angle = lit_sampling && !lattice_xi && lights[light].type != LIGHT_DIRECTIONAL;
   Piece p = by_angle ? angular_piece(light_position, eye, dir, lit) : even_piece(lit);
   int n = lit_sampling ? piece_samples(light, p, dir) : 1;
   vec3 sum = vec3(0.0);

@@ -31,11 +31,11 @@ void main() {
   ivec2 corner = ivec2(gl_VertexID % (lattice + 1), gl_VertexID / (lattice + 1));
   vec3 ray = view_ray(2.0 * vec2(corner) / float(lattice) - 1.0);
   plane = gl_InstanceID;
-  vec3 eye = frame_eye.xyz;
+  vec3 eye = frame.eye;
   // The near face, moved just past the near plane for the first slab (the
   // depth test needs a depth; no surface lies nearer than the near plane).
-  float near_face = max(float(plane) * dz, frame_clip.x * 1.0001);
-  gl_Position = frame_view_projection * vec4(eye + near_face * ray, 1.0);
+  float near_face = max(float(plane) * dz, frame.near_plane * 1.0001);
+  gl_Position = frame.view_projection * vec4(eye + near_face * ray, 1.0);
   vec3 x = eye + (float(plane) + 0.5) * dz * ray;
   for (int c = 0; c < 8; ++c)
     gl_ClipDistance[c] = c < clip_count ? dot(clip_planes[c].xyz, x) + clip_planes[c].w + clip_margin : 1.0;

@@ -2,7 +2,6 @@
 // planes (Fig. 5), the lattice (Fig. 6), float accumulation, clipping to the
 // light's influence volume, jitter, and a scene with every feature.
 #include "core/metrics.hpp"
-#include "methods/planes/planes_method.hpp"
 #include "methods/kit/test_support.hpp"
 #include "reference/reference.hpp"
 
@@ -12,14 +11,15 @@
 namespace airlight::methods {
 namespace {
 
-using test::render;
+using namespace kit::test;
+
 
 constexpr int width = 128, height = 96;
 
 double error_of(const Scene& scene, const std::vector<std::string>& settings) {
-  const Frame f = render(planes_method(), scene, settings, width, height);
-  EXPECT_TRUE(test::all_finite_and_non_negative(f.airlight));
-  return compare_images(f.airlight, test::reference_airlight(scene, width, height)).rel_rmse;
+  const FrameImages f = render(find_method("planes"), scene, settings, width, height);
+  EXPECT_TRUE(kit::test::all_finite_and_non_negative(f.airlight));
+  return compare_images(f.airlight, kit::test::reference_airlight(scene, width, height)).rel_rmse;
 }
 
 const Scene& teapot_spot() {
@@ -73,11 +73,11 @@ TEST(Planes, FloatAccumulationKeepsConverging) {
 // Dobashi Fig. 6: ξ on 5×5, 20×20 and 80×80 lattices against ξ per fragment,
 // at 75 planes sampled as his. A coarse lattice misses the 1/r² peak near the light.
 TEST(Planes, LatticeErrorFallsWithItsResolution) {
-  const Image exact = render(planes_method(), teapot_spot(), {"planes=75", "sampling=plane"}, width, height).airlight;
+  const Image exact = render(find_method("planes"), teapot_spot(), {"planes=75", "sampling=plane"}, width, height).airlight;
   double previous = 1e30;
   for (int n : {5, 20, 80}) {
     const Image lattice =
-        render(planes_method(), teapot_spot(), {"planes=75", "sampling=plane", "lattice=" + std::to_string(n)}, width,
+        render(find_method("planes"), teapot_spot(), {"planes=75", "sampling=plane", "lattice=" + std::to_string(n)}, width,
                height)
             .airlight;
     const double e = compare_images(lattice, exact).rel_rmse;
@@ -93,11 +93,11 @@ TEST(Planes, LatticeErrorFallsWithItsResolution) {
 
 // Clipping to the spot's pyramid only skips fragments the light cannot reach.
 TEST(Planes, ClippingSkipsOnlyUnlitFragments) {
-  const Frame clipped = render(planes_method(), teapot_spot(), {"planes=30"}, width, height);
-  const Frame unclipped = render(planes_method(), teapot_spot(), {"planes=30", "clip=false"}, width, height);
+  const FrameImages clipped = render(find_method("planes"), teapot_spot(), {"planes=30"}, width, height);
+  const FrameImages unclipped = render(find_method("planes"), teapot_spot(), {"planes=30", "clip=false"}, width, height);
   const ImageError diff = compare_images(clipped.airlight, unclipped.airlight);
   EXPECT_LT(diff.max_abs, 1e-6 * diff.mean_reference);  // identical up to the order of float additions
-  auto stat = [](const Frame& f, const std::string& name) {
+  auto stat = [](const FrameImages& f, const std::string& name) {
     for (const auto& [key, value] : f.stats)
       if (key == name) return value;
     return -1.0;
@@ -124,10 +124,10 @@ Image block_mean(const Image& image) {
 // Jitter (Dobashi §7) trades the planes' banding for noise: per pixel the
 // error is similar, but it no longer survives averaging over 4×4 pixels.
 TEST(Planes, JitterTurnsBandingIntoNoise) {
-  const Image& reference = test::reference_airlight(teapot_spot(), width, height);
+  const Image& reference = kit::test::reference_airlight(teapot_spot(), width, height);
   auto blurred_error = [&](const std::string& jitter) {
     const Image a =
-        render(planes_method(), teapot_spot(), {"planes=15", "sampling=plane", "jitter=" + jitter}, width, height)
+        render(find_method("planes"), teapot_spot(), {"planes=15", "sampling=plane", "jitter=" + jitter}, width, height)
             .airlight;
     return compare_images(block_mean(a), block_mean(reference)).rel_rmse;
   };
@@ -139,7 +139,7 @@ TEST(Planes, JitterTurnsBandingIntoNoise) {
 // Spot, point and directional lights, a two-lobe phase function and a box
 // volume of its own (march_test_support.hpp).
 TEST(Planes, EveryFeatureMatchesReference) {
-  const double e = error_of(test::every_feature_scene(), {"planes=200"});
+  const double e = error_of(kit::test::every_feature_scene(), {"planes=200"});
   std::printf("every_feature, 200 planes: rRMSE %.4f\n", e);
   // Midpoint slabs through the volume's faces and the shadows' edges; the
   // 1024² shadow maps' texels (measured 0.0034).
@@ -149,9 +149,9 @@ TEST(Planes, EveryFeatureMatchesReference) {
 // The eye inside a spot's cone, the light behind it: every pixel's first
 // slab starts at the eye, its geometry just past the near plane.
 TEST(Planes, CameraInsideTheCone) {
-  Scene s = test::every_feature_scene();
+  Scene s = kit::test::every_feature_scene();
   s.name = "inside_cone";
-  s.lights = {test::make_light(LightType::spot, {0.0f, 3.5f, 10.0f}, {0.0f, -0.15f, -1.0f}, 300.0f, 30.0f)};
+  s.lights = {kit::test::make_light(LightType::spot, {0.0f, 3.5f, 10.0f}, {0.0f, -0.15f, -1.0f}, 300.0f, 30.0f)};
   const double e = error_of(s, {"planes=200"});
   std::printf("camera inside the cone, 200 planes: rRMSE %.4f\n", e);
   // Midpoint slabs across the shadows' edges and the volume's faces (measured 0.0012).
@@ -162,7 +162,7 @@ TEST(Planes, CameraInsideTheCone) {
 // frame's surface pass (the same in every GPU method), against the reference's.
 TEST(Planes, StageGoboPatternMatchesReferenceSurface) {
   const Scene stage = builtin_scene("stage");
-  const Image surface = render(planes_method(), stage, {"planes=30"}, width, height).surface;
+  const Image surface = render(find_method("planes"), stage, {"planes=30"}, width, height).surface;
   const Image reference = reference::render(stage, width, height).surface;
   const ImageError e = compare_images(surface, reference);
   const double mismatch = pattern_mismatch(surface, reference, 0.5f * e.mean_reference);

@@ -4,6 +4,6 @@
 #include "methods/kit/scene.glsl"
 
 vec3 view_ray(vec2 ndc) {
-  vec2 plane = ndc * frame_image.z * vec2(frame_image.w, 1.0);
-  return frame_forward.xyz + plane.x * frame_right.xyz + plane.y * frame_up.xyz;
+  vec2 plane = ndc * frame.tan_half_fov_y * vec2(frame.aspect, 1.0);
+  return frame.forward + plane.x * frame.right + plane.y * frame.up;
 }

@@ -5,7 +5,6 @@
 #include "core/metrics.hpp"
 #include "methods/kit/test_support.hpp"
 #include "methods/kit/noise.hpp"
-#include "methods/raymarch/raymarch_method.hpp"
 
 #include <airlight/method.hpp>
 #include <gtest/gtest.h>
@@ -21,10 +20,8 @@
 namespace airlight::methods {
 namespace {
 
-using test::all_finite_and_non_negative;
-using test::every_feature_scene;
-using test::make_light;
-using test::phase;
+using namespace kit::test;
+
 
 constexpr int width = 128, height = 96;
 
@@ -34,22 +31,22 @@ double mean(const Image& image) {
   return sum / (3.0 * image.pixels.size());
 }
 
-Frame raymarch(const Scene& scene, const std::vector<std::string>& assignments, int w = width, int h = height) {
-  return test::render(raymarch_method(), scene, assignments, w, h);
+FrameImages raymarch(const Scene& scene, const std::vector<std::string>& assignments, int w = width, int h = height) {
+  return kit::test::render(find_method("raymarch"), scene, assignments, w, h);
 }
 
-const Image& reference_airlight(const Scene& scene) { return test::reference_airlight(scene, width, height); }
+const Image& reference_airlight(const Scene& scene) { return kit::test::reference_airlight(scene, width, height); }
 
 // every_feature_scene's reference takes ~8 s at 128×96 (three lights, a volume,
 // a two-lobe phase function): its tests run at a quarter of the pixels.
 constexpr int small_width = 64, small_height = 48;
 
-Frame raymarch_small(const Scene& scene, const std::vector<std::string>& assignments) {
+FrameImages raymarch_small(const Scene& scene, const std::vector<std::string>& assignments) {
   return raymarch(scene, assignments, small_width, small_height);
 }
 
 const Image& small_reference(const Scene& scene) {
-  return test::reference_airlight(scene, small_width, small_height);
+  return kit::test::reference_airlight(scene, small_width, small_height);
 }
 
 double rel_rmse(const Image& image, const Image& reference) { return compare_images(image, reference).rel_rmse; }
@@ -58,7 +55,7 @@ double rel_rmse(const Image& image, const Image& reference) { return compare_ima
 
 TEST(Raymarch, SettingsIncludeTheSharedGpuSettings) {
   std::set<std::string> names;
-  for (const auto& s : raymarch_method().settings) names.insert(s.name);
+  for (const auto& s : find_method("raymarch").settings) names.insert(s.name);
   EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "steps", "jitter", "sampling"}));
   EXPECT_EQ(find_method("raymarch").source, "Tóth 2009, Kingston 4.1");
 }
@@ -74,7 +71,7 @@ TEST(Raymarch, ErrorFallsAsStepsGrow) {
   const Image& ref = reference_airlight(scene);
   double previous = INFINITY;
   for (int steps : {16, 64, 256}) {
-    const Frame frame = raymarch(scene, {"steps=" + std::to_string(steps)});
+    const FrameImages frame = raymarch(scene, {"steps=" + std::to_string(steps)});
     const double error = rel_rmse(frame.airlight, ref);
     std::printf("teapot_spot %dx%d raymarch steps=%d: airlight rel. RMSE %.5f\n", width, height, steps, error);
     EXPECT_LT(error, previous) << "steps=" << steps;
@@ -122,7 +119,7 @@ TEST(Raymarch, SumsEveryFeatureOfTheModel) {
   for (const char* sampling : {"sampling=uniform", "sampling=equiangular"}) {
     double previous = INFINITY;
     for (int steps : {16, 64, 256}) {
-      const Frame frame = raymarch_small(scene, {"steps=" + std::to_string(steps), sampling});
+      const FrameImages frame = raymarch_small(scene, {"steps=" + std::to_string(steps), sampling});
       const double error = rel_rmse(frame.airlight, small_reference(scene));
       std::printf("every_feature %s steps=%d: airlight rel. RMSE %.5f\n", sampling, steps, error);
       EXPECT_LT(error, previous) << sampling;
@@ -155,7 +152,7 @@ TEST(Raymarch, JitterKeepsTheMean) {
   const double reference_mean = mean(small_reference(scene));
   const double base = mean(raymarch_small(scene, {"steps=32"}).airlight);
   for (const char* mode : {"white", "blue"}) {
-    const Frame frame = raymarch_small(scene, {"steps=32", std::string("jitter=") + mode});
+    const FrameImages frame = raymarch_small(scene, {"steps=32", std::string("jitter=") + mode});
     ASSERT_TRUE(all_finite_and_non_negative(frame.airlight)) << mode;
     const double m = mean(frame.airlight);
     std::printf("jitter=%s: mean %.6f, none: %.6f, reference: %.6f\n", mode, m, base, reference_mean);
@@ -226,7 +223,7 @@ TEST(Raymarch, NoNaNOrInfInHardConfigurations) {
       if (trial % 2 == 1) s.light_model = {LightModelType::simplified, 0.5f, 0.0f};  // a0 = 0: I/(a1 r²)
       const std::string jitter = jitters[random() % 3];
       const std::string sampling = trial < 2 ? "uniform" : "equiangular";
-      const Frame frame = raymarch(
+      const FrameImages frame = raymarch(
           s, {"steps=24", "jitter=" + jitter, "sampling=" + sampling, "shadow_resolution=256"}, 48, 36);
       EXPECT_TRUE(all_finite_and_non_negative(frame.airlight))
           << c.name << ", trial " << trial << ", jitter " << jitter << ", " << sampling;
@@ -256,7 +253,7 @@ TEST(Raymarch, LongMarchesKeepEverySample) {
 }
 
 TEST(Raymarch, ReportsEveryPassTime) {
-  const Frame frame = raymarch(builtin_scene("teapot_spot"), {"steps=8"}, 32, 24);
+  const FrameImages frame = raymarch(builtin_scene("teapot_spot"), {"steps=8"}, 32, 24);
   std::vector<std::string> passes;
   for (const auto& t : frame.times) {
     passes.push_back(t.pass);

@@ -1,34 +1,43 @@
 #include "methods/kit/registry.hpp"
 #include "reference/reference.hpp"
 
-namespace airlight::methods {
+#include <airlight/error.hpp>
 
+namespace airlight::methods {
 namespace {
 
+// The CPU ground truth renders each frame's posed scene from scratch (Embree's
+// scene is rebuilt per frame: the reference is never the fast path).
 class ReferenceMethod final : public Method {
 public:
-  explicit ReferenceMethod(const Settings& s)
-      : settings_{s.real("rel_tol"), s.integer("min_segments")} {}
+  explicit ReferenceMethod(const Settings& s) : settings_{s.real("rel_tol"), s.integer("min_segments")} {}
 
-  void prepare(const Scene& scene) override { scene_ = &scene; }
+  void prepare(const Scene& scene) override { scene_ = scene; }
 
-  Frame render(int width, int height) override {
-    reference::Frame r = reference::render(*scene_, width, height, settings_);
-    Frame frame;
-    frame.airlight = std::move(r.airlight);
-    frame.surface = std::move(r.surface);
-    frame.stats = {{"shadow_rays", static_cast<double>(r.shadow_rays)}};
-    return frame;
+  void render_frame(const FrameInputs& inputs) override {
+    reference::Images r = reference::render(posed_scene(scene_, inputs), inputs.width, inputs.height, settings_);
+    images_ = FrameImages{};
+    images_.airlight = std::move(r.airlight);
+    images_.surface = std::move(r.surface);
+    images_.stats = {{"shadow_rays", static_cast<double>(r.shadow_rays)}};
+    rendered_ = true;
+  }
+
+  FrameImages read_back() override {
+    if (!rendered_) throw Failure("read_back() before render_frame()");
+    return images_;
   }
 
 private:
   reference::Settings settings_;
-  const Scene* scene_ = nullptr;
+  Scene scene_;
+  FrameImages images_;
+  bool rendered_ = false;
 };
 
 MethodInfo reference_method() {
   using T = SettingSpec::Type;
-  return {"reference", "DESIGN §1",
+  return {"reference", "docs/design.md §1",
           "CPU ground truth: Embree visibility, adaptive quadrature per lit interval",
           {{"rel_tol", T::real, 1e-3, 1e-7, 0.1, {}, "relative accuracy of each pixel's airlight integral"},
            {"min_segments", T::integer, 32, 1, 4096, {},

@@ -8,7 +8,7 @@
 
 #include <map>
 
-namespace airlight::gpu {
+namespace airlight::kit {
 namespace {
 
 using namespace twin;
@@ -176,4 +176,4 @@ TEST(OpticsTwin, ConeIntervalsOfEveryKindOfLine) {
 }
 
 }  // namespace
-}  // namespace airlight::gpu
+}  // namespace airlight::kit

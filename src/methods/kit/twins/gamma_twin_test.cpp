@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace airlight::gpu {
+namespace airlight::kit {
 namespace {
 
 using namespace twin;
@@ -72,7 +72,7 @@ void check_scene(const std::string& name, const Scene& scene, double tolerance, 
   SceneFrame frame;
   frame.prepare(scene);
   PassTimer timer;
-  frame.render(8, 8, {}, timer);
+  frame.render(frame_inputs(scene, 8, 8), {}, nullptr, true, timer);
   frame.bind();
   const Texture table = upload_sun_table(optics::build_sun_table());
   std::mt19937 rng(11);
@@ -125,4 +125,4 @@ TEST(GammaTwin, NilssonSimplified) {
 }
 
 }  // namespace
-}  // namespace airlight::gpu
+}  // namespace airlight::kit

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-namespace airlight::gpu {
+namespace airlight::kit {
 namespace {
 
 using namespace twin;
@@ -496,4 +496,4 @@ TEST(OpticsTwin, SunFunctionAndAirlight) {
 }
 
 }  // namespace
-}  // namespace airlight::gpu
+}  // namespace airlight::kit

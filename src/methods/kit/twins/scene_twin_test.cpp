@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace airlight::gpu {
+namespace airlight::kit {
 namespace {
 
 using namespace twin;
@@ -109,7 +109,7 @@ TEST(SceneTwin, LightMapArrivalLegAndInscatter) {
   SceneFrame frame;
   frame.prepare(scene);
   PassTimer timer;
-  frame.render(8, 8, {}, timer);  // fills the frame block the twin reads
+  frame.render(frame_inputs(scene, 8, 8), {}, nullptr, true, timer);  // fills the frame block the twin reads
   frame.bind();
   std::mt19937 rng(7);
   auto anywhere = [&] { return glm::vec3(uniform(rng, -3, 3), uniform(rng, -1, 5), uniform(rng, -3, 3)); };
@@ -192,4 +192,4 @@ TEST(SceneTwin, LightMapArrivalLegAndInscatter) {
 }
 
 }  // namespace
-}  // namespace airlight::gpu
+}  // namespace airlight::kit

@@ -25,7 +25,9 @@
 #include <string>
 #include <vector>
 
-namespace airlight::gpu::twin {
+namespace airlight::kit::twin {
+
+using namespace airlight::gpu;
 
 
 inline constexpr double pi = std::numbers::pi;
@@ -122,4 +124,4 @@ inline Mesh floor_mesh() {
   return floor;
 }
 
-}  // namespace airlight::gpu::twin
+}  // namespace airlight::kit::twin
