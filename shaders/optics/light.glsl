@@ -1,6 +1,6 @@
 // GLSL twin of src/optics/light.cpp: what a light sends toward a point (spot
 // cone, gobo, a directional light's beam) and the distance falloff of each
-// light model (DESIGN §1).
+// light model (docs/design.md §1).
 // Tested against the C++ by src/gpu/optics_twin_test.cpp.
 #include "optics/numerics.glsl"
 #include "optics/media.glsl"

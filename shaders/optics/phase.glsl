@@ -1,4 +1,4 @@
-// GLSL twin of src/optics/phase.cpp (DESIGN §1): phase functions normalized to
+// GLSL twin of src/optics/phase.cpp (docs/design.md §1): phase functions normalized to
 // 1 over the sphere. cos_theta is the cosine between the light's direction of
 // travel and the direction toward the eye, so g > 0 scatters forward.
 // Tested against the C++ by src/gpu/optics_twin_test.cpp.

@@ -1,6 +1,6 @@
 #pragma once
 // Γ(t0 → t1): the unoccluded airlight of one light along a view segment in the
-// homogeneous medium that fills space (DESIGN §1 with V = 1), in closed form.
+// homogeneous medium that fills space (docs/design.md §1 with V = 1), in closed form.
 // Bounded volumes are ignored (the closed forms hold in one homogeneous medium
 // only); a gobo is ignored too (Γ uses the cone or the beam box, not the light
 // map's colours). GLSL twin: shaders/optics/gamma.glsl, src/methods/kit/closed_form.glsl.

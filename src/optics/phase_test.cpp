@@ -56,7 +56,7 @@ TEST(Phase, HenyeyGreensteinMeanCosineIsG) {
 }
 
 TEST(Phase, GreaterThanZeroScattersForward) {
-  // DESIGN §1: cos θ = +1 is forward (toward a viewer facing the light); Kingston
+  // docs/design.md §1: cos θ = +1 is forward (toward a viewer facing the light); Kingston
   // eq. 15 has the opposite sign, so this catches a copied Schlick.
   for (PhaseType t : {PhaseType::henyey_greenstein, PhaseType::schlick}) {
     EXPECT_GT(phase(lobe(t, 0.5f), 1.0), phase(lobe(t, 0.5f), -1.0));
@@ -94,7 +94,7 @@ TEST(Phase, SchlickApproximatesHenyeyGreenstein) {
 }
 
 TEST(Phase, ClosedFormValues) {
-  // Spot values from the formulas of DESIGN §1 (1e-15 relative: rounding).
+  // Spot values from the formulas of docs/design.md §1 (1e-15 relative: rounding).
   EXPECT_NEAR(phase(lobe(PhaseType::isotropic), 0.3), 1.0 / (4 * pi), 1e-17);
   EXPECT_NEAR(phase(lobe(PhaseType::rayleigh), 1.0), 6.0 / (16 * pi), 1e-16);
   EXPECT_NEAR(phase(lobe(PhaseType::hazy), 1.0), 10.0 / (8 * pi), 1e-15);
