@@ -56,7 +56,8 @@ struct SunTable {
 // B(u, v) above, in float as the GLSL.
 float sun_asymptote(float u, float v);
 
-// The table at its default resolution (gamma.cpp states it and its measured error).
+// The table at sun_table_width × sun_table_height (its measured error:
+// docs/decisions.md, SunTable).
 SunTable build_sun_table();
 
 // Sun et al.'s Γ along [0, d] of the ray (origin, unit dir) for a point light,

@@ -74,10 +74,10 @@ TEST(Phase, SchlickKStaysInsideTheUnitInterval) {
 }
 
 TEST(Phase, SchlickApproximatesHenyeyGreenstein) {
-  // Schlick's k(g) is a fit, not an identity. Measured over |g| <= 0.9: Schlick's
-  // mean cosine exceeds g by at most 0.075 (at |g| = 0.8; 0.003 at 0.1, 0.032 at
-  // 0.5), and the L1 distance ∫|p_S - p_HG| dΩ reaches 0.42 at |g| = 0.9 (0.057
-  // at 0.5): the forward peaks differ most. Bounds 0.08 and 0.45 just cover it.
+  // Schlick's k(g) is a fit, not an identity: its mean cosine overshoots g, and
+  // the L1 distance ∫|p_S - p_HG| dΩ grows with |g| (the forward peaks differ
+  // most). The bounds 0.08 and 0.45 just cover the gap measured over |g| <= 0.9
+  // (docs/decisions.md, Model).
   double worst_mean = 0.0, worst_l1 = 0.0;
   for (int i = -18; i <= 18; ++i) {
     const float g = 0.05f * float(i);
