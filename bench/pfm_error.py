@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Relative RMSE and max abs error of PFM images against a reference PFM (DESIGN §6).
+"""Relative RMSE and max abs error of PFM images against a reference PFM (docs/design.md §6).
 
 usage: pfm_error.py REFERENCE.pfm IMAGE.pfm...   (prints one line per image)
 Pure Python so that it needs nothing beyond python3; `airlight compare` is the real tool.

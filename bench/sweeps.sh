@@ -8,7 +8,7 @@
 # "Benchmarking"), their -equal-quality.csv tables, one plot per scene and size
 # (seeds-<scene>-<WxH>.png, analytic-open_fog-<WxH>.png) and machine.txt (date,
 # kernel, CPU). References come from the default cache (README "Benchmarking").
-# About 20 minutes on 2 cores (llvmpipe), most of it in raymarch N = 128 at 512×384.
+# Most of its time goes to raymarch N = 128 at 512×384 (run time: docs/decisions.md).
 # usage: bench/sweeps.sh [E]   (E: the equal-quality rRMSE, default 0.05; builds first)
 set -euo pipefail
 cd "$(dirname "$0")/.."

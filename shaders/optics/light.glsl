@@ -1,7 +1,8 @@
 // GLSL twin of src/optics/light.cpp: what a light sends toward a point (spot
 // cone, gobo, a directional light's beam) and the distance falloff of each
-// light model (DESIGN §1).
-// Tested against the C++ by src/gpu/optics_twin_test.cpp.
+// light model (docs/design.md §1).
+// Tested against the C++ by src/methods/kit/twins/optics_twin_test.cpp and
+// cone_twin_test.cpp.
 #include "optics/numerics.glsl"
 #include "optics/media.glsl"
 
@@ -15,9 +16,9 @@ const float MIN_LIGHT_DISTANCE = 1e-6;
 
 // optics::spot_cone: 1 inside cone - edge, Hermite smoothstep in the angle down
 // to 0 at cone; edge_rad <= 0 is the hard cut of Nilsson eq. 2.9 (1 iff angle <= cone).
-// axis and dir are unit, dir points from the light. Angles in radians. C++ takes
-// acos(axis·dir), fine in double; in float acos near 1 resolves angles only to
-// ~3e-4 rad, so the angle comes from angle_between (numerics.glsl).
+// axis and dir are unit, dir points from the light. Angles in radians. The angle
+// comes from angle_between (numerics.glsl), as in the C++: in float, acos near 1
+// resolves angles only to ~3e-4 rad.
 float spot_cone(vec3 axis, float cone_rad, float edge_rad, vec3 dir) {
   float angle = angle_between(axis, dir);
   if (edge_rad <= 0.0) return angle <= cone_rad ? 1.0 : 0.0;

@@ -3,7 +3,7 @@
 
 // atan(t) for t in [0, 1] to ~2 ulp (Cephes atanf: reduction at tan(π/8),
 // odd minimax polynomial, peak relative error 1.9e-7). GLSL's atan may be off
-// by 4096 ulp (and llvmpipe's is off by ~300 ulp), which shifts a spot's smooth
+// by 4096 ulp (Mesa's llvmpipe is off by hundreds), which shifts a spot's smooth
 // edge by ~1e-4 of its width and the Sun et al. ξ range by as much.
 float atan_unit(float t) {
   float base = 0.0;

@@ -2,7 +2,7 @@
 // (Kingston eqs. 36-40): the unoccluded single scattering of one isotropic
 // point light along a view segment in a homogeneous medium, isotropic phase.
 // Evaluated in the shader by Gauss–Legendre quadrature (the table variant is
-// separate). Tested against the C++ by src/gpu/optics_twin_test.cpp.
+// separate). Tested against the C++ by src/methods/kit/twins/optics_twin_test.cpp.
 #include "optics/numerics.glsl"
 #include "optics/light.glsl"
 
@@ -20,14 +20,14 @@ const float SUN_CUTOFF = 16.0;
 // J = ∫_{ξlo}^{ξlo+dxi} exp(-u (tan ξ - w_lo)) dξ with w_lo = tan ξlo >= 0,
 // dw = tan(ξlo + dxi) - w_lo >= 0 (+∞ allowed), dxi <= π/2 - ξlo; u >= 0.
 // Plain Gauss–Legendre in ξ converges only as 1/N² when the range nears π/2
-// (exp(-u/η), η = π/2 - ξ, has structure at every scale from u to 1: 8e-4 with
-// 16 nodes at u = 2e-3), so the range is split where tan ξ = 1:
+// (exp(-u/η), η = π/2 - ξ, has structure at every scale from u to 1), so the
+// range is split where tan ξ = 1:
 //   A: ξ up to tan ξ = 1, in ξ, with tan ξ - w_lo = tan δ (1 + w_lo²)/(1 - w_lo tan δ)
 //      (δ = ξ - ξlo: no cancellation);
 //   B: beyond, in s = ln(tan ξ / w_b): dξ = ds/(w + 1/w), whose poles stay π/2
 //      off the real axis at every scale, and exp(-u(w - w_lo)) is entire.
-// 12 nodes on each part (one loop): ≤ 1.1e-5 relative for sun_F over u in
-// [0, 50], v in [0, π/2) (in float on the CPU; the GPU test measures its own).
+// 12 nodes on each part (one loop); its error is measured in docs/decisions.md
+// (Numerics) and on the GPU by the twin test.
 float sun_angular(float u, float w_lo, float dw, float dxi) {
   if (!(u > 1e-20)) return dxi;  // J = dxi - O(u·ln(1/u))
   float dw_cut = min(dw, SUN_CUTOFF / u);

@@ -1,5 +1,5 @@
 #pragma once
-// Image files: PNG (8-bit sRGB), PFM and EXR (linear float). DESIGN §5: PFM is
+// Image files: PNG (8-bit sRGB), PFM and EXR (linear float). docs/design.md §5: PFM is
 // bottom row first on disk; Image is always top row first in memory.
 #include <airlight/image.hpp>
 #include <filesystem>

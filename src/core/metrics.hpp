@@ -1,5 +1,5 @@
 #pragma once
-// How far an image is from the reference (DESIGN §6): relative RMSE =
+// How far an image is from the reference (docs/design.md §6): relative RMSE =
 // sqrt(mean((m − r)²)) / mean(r) over all pixels and channels, the maximum
 // absolute error, and the PSNR of the tone-mapped (8-bit sRGB) images.
 #include <airlight/image.hpp>

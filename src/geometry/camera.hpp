@@ -1,5 +1,5 @@
 #pragma once
-// The pinhole camera of DESIGN §5: from `position` toward `look_at`, fov_y_deg the
+// The pinhole camera of docs/design.md §5: from `position` toward `look_at`, fov_y_deg the
 // full vertical field of view, aspect W/H, pixel (i, j) with j = 0 the top row
 // sampled through its centre (px, py) = (i + 0.5, j + 0.5). Right-handed, as
 // glm::lookAt: the camera looks along -z of its own frame, x right, y up.

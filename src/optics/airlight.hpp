@@ -1,5 +1,5 @@
 #pragma once
-// The airlight integral of DESIGN §1 for one light along a ray segment, by
+// The airlight integral of docs/design.md §1 for one light along a ray segment, by
 // adaptive quadrature: the single source of truth every method is judged by.
 #include <airlight/scene.hpp>
 #include <functional>

@@ -130,8 +130,9 @@ Case spot_behind_the_eye() {
 
 TEST(AirlightQuadrature, MatchesBruteForceMidpointSums) {
   // 2e5 midpoint steps: O(1/n) = 5e-6 of the total per discontinuity (box faces,
-  // cone, shadow). Measured differences 4e-6 .. 2.9e-5 fall 8x at 1.6e6 steps, so
-  // they are the midpoint sum's; the bound 1e-4 covers them. Quadrature: 1e-8.
+  // cone, shadow). The differences shrink with the midpoint sum's step, so they
+  // are its error, and the bound 1e-4 covers them (measured: docs/decisions.md,
+  // Numerics). Quadrature: 1e-8.
   QuadratureSettings settings;
   settings.rel_tol = 1e-8;
   for (const Case& c : {point_light_box_and_shadow(), smooth_spot_murky(), sun_through_volume(),
@@ -255,10 +256,10 @@ std::vector<BeamCase> beam_cases() {
 }
 
 // Inside the beam the integrand is a smooth exponential, which G7K15 on 32
-// panels integrates to rounding; the ends come from slabs in double. 1e-10
-// relative (measured <= 4e-16). Integrated over the whole ray instead, panels
-// straddle the box's faces (jumps) and the adaptive rule stops at its rel_tol:
-// measured 5e-6 .. 8e-5, so this test fails without the restriction.
+// panels integrates to rounding; the ends come from slabs in double: 1e-10
+// relative. Integrated over the whole ray instead, panels straddle the box's
+// faces (jumps) and the adaptive rule stops at its rel_tol, far above 1e-10,
+// so this test fails without the restriction (measured: docs/decisions.md, Beams).
 TEST(AirlightQuadrature, UnoccludedBeamMatchesItsClosedForm) {
   const Scene scene = testing::homogeneous_scene(0.05f, 0.02f);
   const double sigma_s = scene.medium.sigma_s.x, sigma_t = scene.medium.sigma_t().x;

@@ -50,7 +50,7 @@ double sun_angular(double sigma_s, double sigma_t, double I0, const Segment& s) 
   return A0 * angular_integral(sigma_t * s.r0, sigma_t * s.xs, xi0, xi0 + half_angle);
 }
 
-// The defining integral in x (DESIGN §1) for rays through or nearly along the
+// The defining integral in x (docs/design.md §1) for rays through or nearly along the
 // line to the light, where the angular form's 1/r0 is singular; r is clamped at
 // ε like the quadrature, so a light on the segment gives a finite, large value.
 double sun_direct(double sigma_s, double sigma_t, double I0, const Segment& s) {

@@ -156,11 +156,10 @@ QuadratureSettings sweep_settings() {
 
 TEST(SunAirlight, MatchesQuadratureOverRandomConfigurations) {
   // 12000 configurations (isotropic point light, homogeneous medium, V = 1).
-  // Measured worst relative difference 8.7e-9 (near the light; 2.2e-9 through
-  // it; <= 1.1e-11 in the other families). Asking the quadrature for 1e-12
-  // leaves it unchanged: it is the quadrature's own floor there, r = |L - (o +
+  // The worst cases are near and through the light, where the quadrature has a
+  // floor of its own (asking it for 1e-12 changes nothing): r = |L - (o +
   // x·dir)| loses ~1e-15 m to rounding at r ~ 1e-6 m (the clamp), i.e. ~1e-9 of
-  // 1/r². Bound 1e-7: a decade above.
+  // 1/r². Bound 1e-7: a decade above that floor (measured: docs/decisions.md).
   std::mt19937_64 rng(2024);
   Worst worst;
   for (int i = 0; i < 12000; ++i) {
@@ -182,8 +181,8 @@ TEST(SunAirlight, MatchesQuadratureOverRandomConfigurations) {
 TEST(NilssonAirlight, MatchesQuadratureOverRandomConfigurations) {
   // 12000 configurations of the simplified model (Nilsson 2.5), a1 = 0 in a
   // sixth of them, a0 = 0 in a third (pure 1/r², clamped through the light).
-  // Measured worst 2.3e-9 (through the light, the quadrature's floor explained
-  // above; <= 4.4e-13 elsewhere). Bound 1e-7.
+  // The worst case is through the light, the quadrature's floor explained above
+  // (measured: docs/decisions.md). Bound 1e-7.
   std::mt19937_64 rng(99);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   Worst worst;

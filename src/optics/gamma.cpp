@@ -169,7 +169,7 @@ double exponential_length(double k, double L) { return k == 0.0 ? L : -std::expm
 
 // A directional light: σs·p·E·∫ exp(-σt(t + s(t))) dt with s(t) the distance
 // back to a beam's aperture, s(t) = s(0) + (dir·axis)·t (linear: exact), or no
-// light leg for an unbounded sun (DESIGN §1). Under the simplified model T = 1
+// light leg for an unbounded sun (docs/design.md §1). Under the simplified model T = 1
 // and the phase is isotropic (Nilsson 2.5).
 glm::dvec3 directional(const Medium& medium, const LightModel& model, const Light& light, const Ray& ray,
                        double t0, double t1) {

@@ -1,6 +1,6 @@
 #pragma once
 // Γ(t0 → t1): the unoccluded airlight of one light along a view segment in the
-// homogeneous medium that fills space (DESIGN §1 with V = 1), in closed form.
+// homogeneous medium that fills space (docs/design.md §1 with V = 1), in closed form.
 // Bounded volumes are ignored (the closed forms hold in one homogeneous medium
 // only); a gobo is ignored too (Γ uses the cone or the beam box, not the light
 // map's colours). GLSL twin: shaders/optics/gamma.glsl, src/methods/kit/closed_form.glsl.
@@ -56,7 +56,8 @@ struct SunTable {
 // B(u, v) above, in float as the GLSL.
 float sun_asymptote(float u, float v);
 
-// The table at its default resolution (gamma.cpp states it and its measured error).
+// The table at sun_table_width × sun_table_height (its measured error:
+// docs/decisions.md, SunTable).
 SunTable build_sun_table();
 
 // Sun et al.'s Γ along [0, d] of the ray (origin, unit dir) for a point light,

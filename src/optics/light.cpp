@@ -63,7 +63,7 @@ bool inside_unit_square(const glm::dvec2& uv) {
 
 bool has_gobo(const Light& light) { return light.gobo && !light.gobo->empty(); }
 
-// The gobo's colour at uv: black outside the unit square (DESIGN §1).
+// The gobo's colour at uv: black outside the unit square (docs/design.md §1).
 glm::dvec3 gobo_colour(const Image& gobo, const glm::dvec2& uv) {
   return inside_unit_square(uv) ? sample_gobo(gobo, uv) : glm::dvec3(0.0);
 }

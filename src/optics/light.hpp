@@ -34,7 +34,7 @@ struct ConeIntervals {
 ConeIntervals cone_intervals(const glm::dvec3& apex, const glm::dvec3& axis, double half_angle,
                              const glm::dvec3& origin, const glm::dvec3& dir, double t0, double t1);
 
-// The gobo's right and up axes (DESIGN §1): right = normalize(axis × gobo_up),
+// The gobo's right and up axes (docs/design.md §1): right = normalize(axis × gobo_up),
 // up = right × axis. If gobo_up is parallel to the axis (the loader prevents it)
 // another world axis stands in, so the frame is never NaN.
 void gobo_frame(const Light& light, glm::dvec3& right, glm::dvec3& up);

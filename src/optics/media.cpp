@@ -61,7 +61,7 @@ glm::dvec3 light_leg_depth(const Scene& scene, const Light& light, const glm::dv
   // segment back to the aperture's plane, through the medium and the volumes.
   // s < 0 (upstream, where the beam sends nothing) counts as 0, keeping exp(-τ) <= 1.
   if (has_beam(light)) return optical_depth(scene, x, x + std::max(beam_depth(light, x), 0.0) * to_light);
-  // DESIGN §1: sunlight arrives unattenuated by the filling medium; bounded
+  // docs/design.md §1: sunlight arrives unattenuated by the filling medium; bounded
   // volumes between x and infinity (toward the light) still absorb.
   return volumes_depth(scene, x, to_light, 0.0, infinity);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The media of a scene along a segment: the medium that fills space plus the
-// bounded volumes (DESIGN §1: their coefficients add; each phase weights its own
+// bounded volumes (docs/design.md §1: their coefficients add; each phase weights its own
 // share of the scattering).
 #include <airlight/scene.hpp>
 #include <glm/vec3.hpp>
@@ -17,7 +17,7 @@ glm::dvec3 eye_leg_depth(const Scene& scene, const glm::dvec3& a, const glm::dve
 
 // Optical depth of a light's leg from x: to the light's position for point and
 // spot lights; for directional lights only through bounded volumes (the filling
-// medium has no extinction on that leg, DESIGN §1), along -direction; for a
+// medium has no extinction on that leg, docs/design.md §1), along -direction; for a
 // directional light with a beam, emitted at its aperture, along the segment
 // from x back to the aperture's plane, x − s·direction with s = beam_depth(x)
 // (0 for x upstream of the aperture): σt_medium·s plus the volumes' chords.

@@ -46,7 +46,7 @@ TEST(Media, LightLegs) {
   Light sun;
   sun.type = LightType::directional;
   sun.direction = {0, -1, 0};
-  // Only bounded volumes absorb sunlight (DESIGN §1): from below the box up through it.
+  // Only bounded volumes absorb sunlight (docs/design.md §1): from below the box up through it.
   EXPECT_NEAR(light_leg_depth(s, sun, {0.5, -3, 0.5}).x, 0.75, 1e-6);
   EXPECT_EQ(light_leg_depth(s, sun, {3, -3, 0.5}), glm::dvec3(0.0));
   Light point;
@@ -80,7 +80,7 @@ TEST(Media, BeamLegRunsBackToTheAperture) {
   above.max = {1, 5, 1};
   s.volumes.push_back(above);
   EXPECT_NEAR(light_leg_depth(s, beam, {0.5, -1, 0.5}).x, 4 * 0.1 + 0.75, 1e-6);
-  // ...but everything of an unbounded sun (DESIGN §1: volumes only, to infinity).
+  // ...but everything of an unbounded sun (docs/design.md §1: volumes only, to infinity).
   Light sun = beam;
   sun.beam.reset();
   EXPECT_NEAR(light_leg_depth(s, sun, {0.5, -1, 0.5}).x, 2 * 0.75, 1e-6);

@@ -1,5 +1,5 @@
 #pragma once
-// Phase functions (DESIGN §1), each normalized to integrate to 1 over the sphere.
+// Phase functions (docs/design.md §1), each normalized to integrate to 1 over the sphere.
 // cos_theta is the cosine between the light's direction of travel and the
 // direction toward the eye, so g > 0 scatters forward.
 #include <airlight/scene.hpp>

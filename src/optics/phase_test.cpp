@@ -56,7 +56,7 @@ TEST(Phase, HenyeyGreensteinMeanCosineIsG) {
 }
 
 TEST(Phase, GreaterThanZeroScattersForward) {
-  // DESIGN §1: cos θ = +1 is forward (toward a viewer facing the light); Kingston
+  // docs/design.md §1: cos θ = +1 is forward (toward a viewer facing the light); Kingston
   // eq. 15 has the opposite sign, so this catches a copied Schlick.
   for (PhaseType t : {PhaseType::henyey_greenstein, PhaseType::schlick}) {
     EXPECT_GT(phase(lobe(t, 0.5f), 1.0), phase(lobe(t, 0.5f), -1.0));
@@ -74,10 +74,10 @@ TEST(Phase, SchlickKStaysInsideTheUnitInterval) {
 }
 
 TEST(Phase, SchlickApproximatesHenyeyGreenstein) {
-  // Schlick's k(g) is a fit, not an identity. Measured over |g| <= 0.9: Schlick's
-  // mean cosine exceeds g by at most 0.075 (at |g| = 0.8; 0.003 at 0.1, 0.032 at
-  // 0.5), and the L1 distance ∫|p_S - p_HG| dΩ reaches 0.42 at |g| = 0.9 (0.057
-  // at 0.5): the forward peaks differ most. Bounds 0.08 and 0.45 just cover it.
+  // Schlick's k(g) is a fit, not an identity: its mean cosine overshoots g, and
+  // the L1 distance ∫|p_S - p_HG| dΩ grows with |g| (the forward peaks differ
+  // most). The bounds 0.08 and 0.45 just cover the gap measured over |g| <= 0.9
+  // (docs/decisions.md, Model).
   double worst_mean = 0.0, worst_l1 = 0.0;
   for (int i = -18; i <= 18; ++i) {
     const float g = 0.05f * float(i);
@@ -94,7 +94,7 @@ TEST(Phase, SchlickApproximatesHenyeyGreenstein) {
 }
 
 TEST(Phase, ClosedFormValues) {
-  // Spot values from the formulas of DESIGN §1 (1e-15 relative: rounding).
+  // Spot values from the formulas of docs/design.md §1 (1e-15 relative: rounding).
   EXPECT_NEAR(phase(lobe(PhaseType::isotropic), 0.3), 1.0 / (4 * pi), 1e-17);
   EXPECT_NEAR(phase(lobe(PhaseType::rayleigh), 1.0), 6.0 / (16 * pi), 1e-16);
   EXPECT_NEAR(phase(lobe(PhaseType::hazy), 1.0), 10.0 / (8 * pi), 1e-15);

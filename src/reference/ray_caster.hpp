@@ -1,5 +1,5 @@
 #pragma once
-// Exact ray queries against a scene's triangle meshes through Embree 3 (DESIGN §3,
+// Exact ray queries against a scene's triangle meshes through Embree 3 (docs/design.md §3,
 // reference): the first hit along a view ray and occlusion between two points.
 // Robust traversal (RTC_SCENE_FLAG_ROBUST); one Embree geometry per mesh whose
 // geometry id is the mesh's index in Scene::meshes. Queries are thread-safe.

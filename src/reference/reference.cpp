@@ -73,7 +73,7 @@ struct Context {
   }
 };
 
-// A shaded surface point: normals flipped toward the viewer (DESIGN §1, Lambertian).
+// A shaded surface point: normals flipped toward the viewer (docs/design.md §1, Lambertian).
 struct SurfacePoint {
   glm::dvec3 position{0.0};
   glm::dvec3 geometric_normal{0.0};
@@ -102,7 +102,7 @@ SurfacePoint surface_point(const Scene& scene, const optics::Ray& ray, const Hit
           facing(interpolated_normal(mesh, hit), ray.dir), glm::dvec3(mesh.albedo)};
 }
 
-// Irradiance from one light at a surface point: E·cos θ_i·V·exp(−τ_light) (DESIGN §1).
+// Irradiance from one light at a surface point: E·cos θ_i·V·exp(−τ_light) (docs/design.md §1).
 // A light behind the triangle's own plane is blocked by the triangle.
 glm::dvec3 irradiance(const Context& c, const Light& light, const SurfacePoint& s, Counters& count) {
   const optics::Arrival arrival = optics::arrival(light, c.scene.light_model, s.position);
@@ -115,7 +115,7 @@ glm::dvec3 irradiance(const Context& c, const Light& light, const SurfacePoint& 
   return arrival.irradiance * cos_i * glm::exp(-optics::light_leg_depth(c.scene, light, s.position));
 }
 
-// L_surf = albedo·ambient + Σ_lights albedo/π · irradiance (DESIGN §1).
+// L_surf = albedo·ambient + Σ_lights albedo/π · irradiance (docs/design.md §1).
 glm::dvec3 surface_radiance(const Context& c, const SurfacePoint& s, Counters& count) {
   glm::dvec3 e(0.0);
   for (const Light& light : c.scene.lights) e += irradiance(c, light, s, count);
@@ -127,7 +127,7 @@ glm::dvec3 eye_transmittance(const Scene& scene, const glm::dvec3& eye, const gl
   return glm::exp(-optics::eye_leg_depth(scene, eye, p));
 }
 
-// L_air = Σ_lights ∫_0^d V·e dx with V by Embree occlusion rays (DESIGN §1).
+// L_air = Σ_lights ∫_0^d V·e dx with V by Embree occlusion rays (docs/design.md §1).
 glm::dvec3 airlight(const Context& c, const optics::Ray& ray, double d, Counters& count) {
   const optics::QuadratureSettings quadrature{.rel_tol = c.settings.rel_tol,
                                               .min_segments = c.settings.min_segments};

@@ -1,7 +1,7 @@
 #pragma once
-// The CPU ground truth (DESIGN §3 `reference`): exact visibility by Embree ray
-// casts, the airlight integral of DESIGN §1 by optics::airlight_quadrature, and
-// Lambertian surfaces, per pixel of the DESIGN §5 camera. Every method is judged
+// The CPU ground truth (docs/design.md §3 `reference`): exact visibility by Embree ray
+// casts, the airlight integral of docs/design.md §1 by optics::airlight_quadrature, and
+// Lambertian surfaces, per pixel of the camera of docs/design.md §5. Every method is judged
 // against its airlight image.
 #include <airlight/image.hpp>
 #include <airlight/scene.hpp>
@@ -14,7 +14,7 @@ struct Settings {
 };
 
 struct Images {
-  Image airlight;   // L_air = Σ_lights ∫_0^d σs·p·I·V·T_light/r²·T_eye dx    (DESIGN §1)
+  Image airlight;   // L_air = Σ_lights ∫_0^d σs·p·I·V·T_light/r²·T_eye dx    (docs/design.md §1)
   Image surface;    // L_surf · T(d); 0 where the view ray reaches the far plane
   Image composite;  // surface + airlight
   long shadow_rays = 0;  // occlusion rays traced (for shadow rays per second)

@@ -128,7 +128,7 @@ optics::Ray pixel_ray(const Scene& scene, const Image& image, int i, int j) {
   return geometry::primary_ray(scene.camera, image.width, image.height, i + 0.5, j + 0.5);
 }
 
-// DESIGN §6: sqrt(mean((m − r)²)) / mean(r) over all pixels and channels.
+// docs/design.md §6: sqrt(mean((m − r)²)) / mean(r) over all pixels and channels.
 double relative_rmse(const Image& m, const Image& r) {
   double squares = 0.0, sum = 0.0;
   for (size_t k = 0; k < r.pixels.size(); ++k)
@@ -170,8 +170,8 @@ TEST(Reference, UnoccludedPointLightMatchesSunAirlight) {
       const optics::Ray ray = pixel_ray(scene, frame.airlight, i, j);
       const double d = geometry::far_distance(scene.camera, ray.dir);
       const double expected = optics::sun_airlight(0.05, 0.07, 100.0, ray.origin, ray.dir, dvec3(light), d);
-      // 0.1%: the default rel_tol promises 1e-3 of the integral (observed: 7e-8,
-      // float pixels, since optics grades its panels around the closest approach).
+      // 0.1%: the default rel_tol promises 1e-3 of the integral (it does far
+      // better here, since optics grades its panels around the closest approach).
       for (int c = 0; c < 3; ++c)
         ASSERT_NEAR(frame.airlight.at(i, j)[c], expected, 1e-3 * expected) << i << "," << j;
     }
@@ -216,7 +216,7 @@ TEST(Reference, HardEdgedSpotLightMatchesBruteForceMidpointSum) {
         ASSERT_NEAR(frame.airlight.at(i, j)[c], b.sum[c], bound) << i << "," << j << " channel " << c;
       }
     }
-  // Over the image the edge errors average out: 0.1% relative RMSE (DESIGN §6 measure).
+  // Over the image the edge errors average out: 0.1% relative RMSE (docs/design.md §6 measure).
   EXPECT_LT(relative_rmse(frame.airlight, brute), 1e-3);
   EXPECT_GT(total(frame.airlight), 0.0);
 }
@@ -272,7 +272,7 @@ FloorPoint floor_point(const optics::Ray& ray) {
   return {ray.origin + t * ray.dir, t};
 }
 
-// albedo·ambient + albedo/π·I·cos θ/r² · exp(−σt·(r + t)), DESIGN §1.
+// albedo·ambient + albedo/π·I·cos θ/r² · exp(−σt·(r + t)), docs/design.md §1.
 dvec3 lambert(const PlaneScene& p, const FloorPoint& f, double sigma_t, bool lit) {
   const dvec3 to_light = dvec3(p.light) - f.position;
   const double r = glm::length(to_light);

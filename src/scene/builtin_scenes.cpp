@@ -1,4 +1,4 @@
-// Built-in scenes (DESIGN §4): the documents' test scenes, rebuilt from their
+// Built-in scenes (docs/design.md §4): the documents' test scenes, rebuilt from their
 // descriptions (the figures did not survive), lit so that the airlight pass is
 // roughly 0.05–1 W/(m²·sr) in the shaft at the default camera and exposure 1.
 #include "scene/gobo_patterns.hpp"
@@ -227,7 +227,7 @@ std::array<glm::vec3, 8> corners(const Extent& e) {
 // Its rectangle lies upstream of the whole opening, `margin` clear of it;
 // across the light it covers the opening's projection along the light with
 // `margin` to spare; it reaches past every corner of `room`. The rectangle's
-// axes are the gobo frame of DESIGN §1 (optics::gobo_frame, out of this layer's
+// axes are the gobo frame of docs/design.md §1 (optics::gobo_frame, out of this layer's
 // reach): right = normalize(direction × gobo_up), up = right × direction.
 Beam beam_through(const Light& sun, const Extent& opening, const Extent& room, float margin) {
   const glm::vec3 d = sun.direction, centre = 0.5f * (opening.min + opening.max);

@@ -13,7 +13,7 @@ inline bool parallel(const glm::dvec3& a, const glm::dvec3& b) {
   return glm::length(glm::cross(glm::normalize(a), glm::normalize(b))) < kParallel;
 }
 
-// The gobo's up (DESIGN §1): world up, or +z for a spot pointing (nearly)
+// The gobo's up (docs/design.md §1): world up, or +z for a spot pointing (nearly)
 // straight up or down, where world up cannot orient it.
 inline glm::vec3 default_gobo_up(const glm::vec3& axis) {
   const glm::vec3 up(0, 1, 0);

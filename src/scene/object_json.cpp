@@ -1,4 +1,4 @@
-// "objects" entries (DESIGN §4). Every object has the optional keys
+// "objects" entries (docs/design.md §4). Every object has the optional keys
 //   translate [x,y,z], rotate_deg [rx,ry,rz] (about world X, then Y, then Z),
 //   scale s (> 0, uniform), albedo (colour in [0,1], default 0.7), name;
 // and either "mesh": "file.obj" or "shape" with the shape's keys:

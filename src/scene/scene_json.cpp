@@ -1,4 +1,4 @@
-// The airlight-scene/1 format (DESIGN §4): one reader per section, each
+// The airlight-scene/1 format (docs/design.md §4): one reader per section, each
 // checking its values' types and ranges and rejecting keys it does not know.
 #include "core/image_io.hpp"
 #include "scene/json_reader.hpp"
@@ -157,7 +157,7 @@ std::shared_ptr<const Image> read_gobo(const JsonNode& node, const std::filesyst
   return image;
 }
 
-// gobo_up orients a spot's gobo and a beam (DESIGN §1): by default world up,
+// gobo_up orients a spot's gobo and a beam (docs/design.md §1): by default world up,
 // or +z for an axis (nearly) straight up or down.
 void read_gobo_up(JsonObject& o, Light& light) {
   light.gobo_up = default_gobo_up(light.direction);

@@ -1,5 +1,5 @@
 #pragma once
-// The meshes objects are made of (DESIGN §4 "objects"). All are in object
+// The meshes objects are made of (docs/design.md §4 "objects"). All are in object
 // space; the caller applies the object's Transform. Conventions as in
 // mesh_build.hpp: counter-clockwise outward winding, unit normals, no
 // degenerate triangles.
