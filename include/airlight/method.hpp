@@ -41,9 +41,14 @@ struct FrameInputs {
 // The scene as loaded, at width × height: the first frame's inputs.
 FrameInputs frame_inputs(const Scene& scene, int width, int height);
 
+// Throws InputError("frame", key) for inputs that do not fit the prepared
+// scene: a size outside 1–16384, a transform count other than the mesh count,
+// non-finite numbers, a zero light direction, a cone outside (0, 180], a
+// negative colour or coefficient. Every render_frame checks this first.
+void check_frame_inputs(const Scene& scene, const FrameInputs& inputs);
+
 // The scene a frame shows: the inputs' camera, lights, medium and light model,
 // and its meshes moved by the transforms (what the reference renders).
-// Throws InputError("frame", "transforms") when their count is not the scene's mesh count.
 Scene posed_scene(const Scene& scene, const FrameInputs& inputs);
 
 enum class Pass { composite, airlight, surface };

@@ -32,6 +32,12 @@ public:
   int integer(const std::string& name) const;
   bool boolean(const std::string& name) const;
   const std::string& choice(const std::string& name) const;
+  // A choice as the enum whose enumerators are the spec's choices in order.
+  template <typename Enum>
+  Enum option(const std::string& name) const {
+    return static_cast<Enum>(choice_index(name));
+  }
+  int choice_index(const std::string& name) const;
 
   const std::vector<SettingSpec>& specs() const { return specs_; }
   nlohmann::json to_json() const;

@@ -89,6 +89,11 @@ void Settings::set(const std::string& key, const std::string& value, const std::
 double Settings::real(const std::string& name) const { return spec(name), values_.at(name); }
 int Settings::integer(const std::string& name) const { return static_cast<int>(real(name)); }
 bool Settings::boolean(const std::string& name) const { return real(name) != 0.0; }
+int Settings::choice_index(const std::string& name) const {
+  if (spec(name).type != SettingSpec::Type::choice) throw Failure("setting " + name + " is not a choice");
+  return static_cast<int>(values_.at(name));
+}
+
 const std::string& Settings::choice(const std::string& name) const {
   return spec(name).choices.at(static_cast<size_t>(values_.at(name)));
 }

@@ -28,16 +28,12 @@ std::vector<SettingSpec> analytic_settings() {
 // G-buffer distance (analytic.comp.glsl).
 class Analytic final : public kit::GpuMethod {
 public:
-  explicit Analytic(const Settings& s) : GpuMethod(s), table_(s.choice("F") == "table") {}
+  enum class F { table, shader };  // the `F` setting's choices, in order
+  explicit Analytic(const Settings& s) : GpuMethod(s), table_(s.option<F>("F") == F::table) {}
 
 private:
   void prepare_airlight(const Scene&) override {
-    std::string defines = kit::frame_defines() + "#define BINDING_SUN_TABLE " + std::to_string(sun_table_unit) + "\n";
-    if (table_) {
-      defines += "#define SUN_F_TABLE\n";
-      upload_table();
-    }
-    program_ = gpu::make_compute_program("methods/analytic/analytic.comp.glsl", defines);
+    if (table_) upload_table();
   }
 
   // Sun et al.'s F(u, v) as an R32F texture (Kingston 4.2.3); it depends on no
@@ -53,7 +49,9 @@ private:
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     gpu::ScopedPass pass(timer, "airlight");
-    glUseProgram(program_.id());
+    const std::string defines = kit::frame_defines() + "#define BINDING_SUN_TABLE " +
+                                std::to_string(sun_table_unit) + "\n" + (table_ ? "#define SUN_F_TABLE\n" : "");
+    glUseProgram(gpu::cached_compute_program("methods/analytic/analytic.comp.glsl", defines).id());
     if (table_) glBindTextureUnit(sun_table_unit, table_texture_.id());
     glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     gpu::dispatch_pixels(frame.width(), frame.height());
@@ -63,7 +61,6 @@ private:
   std::vector<std::pair<std::string, double>> stats() const override { return {{"closed_forms", closed_forms_}}; }
 
   bool table_;
-  gpu::Program program_;
   gpu::Texture table_texture_;
   double closed_forms_ = 0.0;
 };

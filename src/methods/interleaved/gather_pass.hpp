@@ -2,6 +2,7 @@
 // Interleaved sampling's separable sum (Tóth 2009 §4.1; gather.comp.glsl): a
 // horizontal then a vertical pass, each adding M consecutive pixels, optionally
 // leaving out neighbours across silhouettes (depth-aware).
+#include "gpu/program.hpp"
 #include "methods/kit/scene_frame.hpp"
 
 namespace airlight::methods {
@@ -17,18 +18,15 @@ class GatherPass {
 public:
   explicit GatherPass(GatherSettings settings) : settings_(settings) {}
 
-  // Compiles the program; needs a current context.
-  void prepare();
-
   // Replaces each pixel of `image` (RGBA32F of the frame's size) by the sum over
   // its M×M window; the frame must be bound (SceneFrame::bind).
   void run(const kit::SceneFrame& frame, const gpu::Texture& image);
 
 private:
-  void pass(const kit::SceneFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical);
+  void pass(const gpu::Program& program, const kit::SceneFrame& frame, const gpu::Texture& from,
+            const gpu::Texture& to, bool vertical);
 
   GatherSettings settings_;
-  gpu::Program program_;
   gpu::Texture rows_;  // the horizontal pass's output
   int width_ = 0, height_ = 0;
 };

@@ -20,12 +20,10 @@ public:
                  normalized(s)}) {}
 
 private:
-  static bool normalized(const Settings& s) { return s.choice("gather") == "normalized"; }
+  enum class Gather { sum, normalized };  // the `gather` setting's choices, in order
+  static bool normalized(const Settings& s) { return s.option<Gather>("gather") == Gather::normalized; }
 
-  void prepare_airlight(const Scene&) override {
-    march_.prepare();
-    gather_.prepare();
-  }
+  void prepare_airlight(const Scene&) override { march_.prepare(); }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     {

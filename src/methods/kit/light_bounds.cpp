@@ -3,6 +3,7 @@
 #include "optics/light.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -107,6 +108,15 @@ void trace_beam(const Light& light, const reference::RayCaster& rays, std::vecto
   });
 }
 
+// Whether a light's bounds can differ between a and b (colours cannot change them).
+bool same_reach(const Light& a, const Light& b) {
+  const bool beams = a.beam.has_value() == b.beam.has_value() &&
+                     (!a.beam || (a.beam->origin == b.beam->origin && a.beam->size == b.beam->size &&
+                                  a.beam->length == b.beam->length));
+  return a.type == b.type && a.position == b.position && a.direction == b.direction && a.cone_deg == b.cone_deg &&
+         a.gobo_up == b.gobo_up && beams;
+}
+
 }  // namespace
 
 LightBounds light_bounds(const Light& light, const reference::RayCaster& rays) {
@@ -133,6 +143,38 @@ double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& cam
   double deepest = 0.0;
   for (const glm::dvec3& p : volume.hull) deepest = std::max(deepest, glm::dot(p - camera.position, camera.forward));
   return std::min(far, 1.01 * deepest);
+}
+
+}  // namespace airlight::kit
+
+namespace airlight::kit {
+
+void LitRegions::prepare(const Scene& scene) {
+  scene_ = scene;
+  rays_.reset();
+  transforms_.clear();
+  lights_.clear();
+  bounds_.clear();
+}
+
+void LitRegions::update(const FrameInputs& inputs) {
+  const auto start = std::chrono::steady_clock::now();
+  const bool moved = !rays_ || inputs.transforms != transforms_;
+  if (moved) {
+    rays_ = std::make_unique<reference::RayCaster>(posed_scene(scene_, inputs));
+    transforms_ = inputs.transforms;
+  }
+  const size_t known = moved ? 0 : std::min(lights_.size(), inputs.lights.size());
+  rebuilt_ = 0;
+  bounds_.resize(inputs.lights.size());
+  lights_.resize(inputs.lights.size());
+  for (size_t i = 0; i < inputs.lights.size(); ++i) {
+    if (i < known && same_reach(lights_[i], inputs.lights[i])) continue;
+    bounds_[i] = light_bounds(inputs.lights[i], *rays_);
+    lights_[i] = inputs.lights[i];
+    ++rebuilt_;
+  }
+  seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace airlight::kit

@@ -6,9 +6,11 @@
 #include "geometry/camera.hpp"
 #include "reference/ray_caster.hpp"
 
+#include <airlight/method.hpp>
 #include <airlight/scene.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <memory>
 #include <vector>
 
 namespace airlight::kit {
@@ -38,5 +40,29 @@ LightBounds light_bounds(const Light& light, const reference::RayCaster& rays);
 // rays can miss a spike of geometry narrower than its spacing, which then ends
 // the planes early there; 1% of the depth is added for it.
 double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& camera, double far);
+
+// Every light's bounds as the frames go by (docs/design.md §3: what a method
+// rebuilds per frame). A light whose position, direction, cone, beam or gobo
+// changed is traced again; when an object moves, the ray caster is rebuilt on
+// the posed scene and every light is traced again. Nothing is redone for a
+// frame that only moves the camera or changes colours and the medium.
+class LitRegions {
+public:
+  void prepare(const Scene& scene);
+  void update(const FrameInputs& inputs);
+  const std::vector<LightBounds>& bounds() const { return bounds_; }
+  // Of the last update: lights traced again, and its seconds on the CPU.
+  int rebuilt() const { return rebuilt_; }
+  double seconds() const { return seconds_; }
+
+private:
+  Scene scene_;
+  std::unique_ptr<reference::RayCaster> rays_;
+  std::vector<glm::mat4> transforms_;
+  std::vector<Light> lights_;
+  std::vector<LightBounds> bounds_;
+  int rebuilt_ = 0;
+  double seconds_ = 0.0;
+};
 
 }  // namespace airlight::kit

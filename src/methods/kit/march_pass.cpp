@@ -22,7 +22,7 @@ constexpr GLuint jitter_unit = kit::binding::first_free_texture;
 // once.)
 constexpr int samples_per_dispatch = 64;
 
-const std::vector<std::string> samplings{"uniform", "equiangular"};  // SAMPLING_* in march.glsl
+const std::vector<std::string> samplings{"uniform", "equiangular"};  // in Sampling's order
 
 }  // namespace
 
@@ -31,7 +31,7 @@ std::vector<SettingSpec> march_settings() {
   return {{"steps", T::integer, 64, 1, 4096, {},
            "samples N per view ray (per light with sampling=equiangular), at the middle of each step: the "
            "error falls as 1/N² where the integrand is smooth over a step, as 1/N across cone and shadow edges"},
-          {"jitter", T::choice, 0, 0, 0, {"none", "white", "blue"},
+          {"jitter", T::choice, 0, 0, 0, jitter_choices,
            "per-pixel offset of the samples within their steps (Kingston §5.1.1): none = the middle, "
            "white = hashed noise, blue = 64×64 void-and-cluster noise"},
           {"sampling", T::choice, 0, 0, 0, samplings,
@@ -41,14 +41,11 @@ std::vector<SettingSpec> march_settings() {
 }
 
 MarchSettings MarchSettings::from(const Settings& s, int block, bool normalized) {
-  return {s.integer("steps"), s.choice("jitter"), s.choice("sampling"), block, normalized};
+  return {s.integer("steps"), s.option<Jitter>("jitter"), s.option<Sampling>("sampling"), block, normalized};
 }
 
 void MarchPass::prepare() {
-  program_ = gpu::make_compute_program("methods/raymarch/raymarch.comp.glsl",
-                                       kit::frame_defines() + "#define BINDING_JITTER " +
-                                           std::to_string(jitter_unit) + "\n");
-  const std::vector<float> offsets = settings_.jitter == "blue" ? blue_noise() : white_noise();
+  const std::vector<float> offsets = settings_.jitter == Jitter::blue ? blue_noise() : white_noise();
   noise_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32F, noise_size, noise_size);
   glTextureSubImage2D(noise_.id(), 0, 0, 0, noise_size, noise_size, GL_RED, GL_FLOAT, offsets.data());
 }
@@ -56,18 +53,19 @@ void MarchPass::prepare() {
 void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   const int stride = settings_.block * settings_.block;
   const int own_samples = (settings_.steps + stride - 1) / stride;  // of pixel q = 0, the most
-  const auto sampling = std::find(samplings.begin(), samplings.end(), settings_.sampling) - samplings.begin();
-  glUseProgram(program_.id());
-  gpu::set_uniform(program_, "steps", settings_.steps);
-  gpu::set_uniform(program_, "block", settings_.block);
-  gpu::set_uniform(program_, "jitter", settings_.jitter != "none" ? 1 : 0);
-  gpu::set_uniform(program_, "sampling", static_cast<int>(sampling));
-  gpu::set_uniform(program_, "normalized", settings_.normalized ? 1 : 0);
+  const gpu::Program& program = gpu::cached_compute_program(
+      "methods/kit/march.comp.glsl", frame_defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n");
+  glUseProgram(program.id());
+  gpu::set_uniform(program, "steps", settings_.steps);
+  gpu::set_uniform(program, "block", settings_.block);
+  gpu::set_uniform(program, "jitter", settings_.jitter != Jitter::none ? 1 : 0);
+  gpu::set_uniform(program, "sampling", static_cast<int>(settings_.sampling));
+  gpu::set_uniform(program, "normalized", settings_.normalized ? 1 : 0);
   glBindTextureUnit(jitter_unit, noise_.id());
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   for (int first = 0; first < own_samples; first += samples_per_dispatch) {
-    gpu::set_uniform(program_, "first_sample", first);
-    gpu::set_uniform(program_, "sample_count", std::min(samples_per_dispatch, own_samples - first));
+    gpu::set_uniform(program, "first_sample", first);
+    gpu::set_uniform(program, "sample_count", std::min(samples_per_dispatch, own_samples - first));
     gpu::dispatch_pixels(frame.width(), frame.height());
   }
   light_samples_ = static_cast<double>(frame.width()) * frame.height() * settings_.steps / stride * frame.light_count();

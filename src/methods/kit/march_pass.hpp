@@ -1,6 +1,7 @@
 #pragma once
-// The march pass shared by raymarch and interleaved (raymarch.comp.glsl): its
+// The march pass shared by raymarch and interleaved (march.comp.glsl): its
 // settings, its program and noise texture, and its dispatches.
+#include "methods/kit/noise.hpp"
 #include "methods/kit/scene_frame.hpp"
 
 #include <airlight/settings.hpp>
@@ -12,10 +13,13 @@ namespace airlight::kit {
 // steps, jitter and sampling: the march's settings, common to both methods.
 std::vector<SettingSpec> march_settings();
 
+// The `sampling` setting: where the steps go (march.glsl's SAMPLING_*).
+enum class Sampling { uniform, equiangular };
+
 struct MarchSettings {
-  int steps = 64;                     // N
-  std::string jitter = "none";        // none | white | blue
-  std::string sampling = "uniform";   // uniform | equiangular
+  int steps = 64;                        // N
+  Jitter jitter = Jitter::none;
+  Sampling sampling = Sampling::uniform;
   int block = 1;                      // M: pixel q marches the samples k ≡ q (mod M²)
   bool normalized = false;            // divide each pixel's sum by its light guide (march.glsl)
 
@@ -27,7 +31,8 @@ class MarchPass {
 public:
   explicit MarchPass(MarchSettings settings) : settings_(std::move(settings)) {}
 
-  // Compiles the program and uploads the noise tile; needs a current context.
+  // Uploads the noise tile; needs a current context. The program is compiled
+  // at the first run (gpu::cached_compute_program).
   void prepare();
 
   // Writes each pixel's sum over its own samples into `target` (RGBA32F of the
@@ -40,7 +45,6 @@ public:
 
 private:
   MarchSettings settings_;
-  gpu::Program program_;
   gpu::Texture noise_;
   double light_samples_ = 0.0;
 };

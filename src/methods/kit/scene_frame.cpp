@@ -256,15 +256,8 @@ const Program& frame_program(const char* vertex, const char* fragment) {
 
 // ---- checks of a frame's inputs against the prepared scene (before any GL work) ----
 
-void check_inputs(const FrameInputs& in, const Scene& scene, const std::vector<const Image*>& gobos) {
-  if (in.width <= 0 || in.height <= 0 || in.width > 16384 || in.height > 16384)
-    throw InputError("frame", "size",
-                     "must be 1 to 16384 pixels per side, got " + std::to_string(in.width) + "x" +
-                         std::to_string(in.height));
-  if (!in.transforms.empty() && in.transforms.size() != scene.meshes.size())
-    throw InputError("frame", "transforms",
-                     "needs one per mesh (" + std::to_string(scene.meshes.size()) + "), got " +
-                         std::to_string(in.transforms.size()));
+// Gobos are uploaded at prepare: a frame may only use those.
+void check_gobos(const FrameInputs& in, const std::vector<const Image*>& gobos) {
   for (size_t i = 0; i < in.lights.size(); ++i)
     if (has_gobo(in.lights[i]) && std::find(gobos.begin(), gobos.end(), in.lights[i].gobo.get()) == gobos.end())
       throw InputError("frame", "lights[" + std::to_string(i) + "].gobo",
@@ -437,7 +430,8 @@ void SceneFrame::upload_lights(const EngineFrame* engine, int resolution) {
 
 void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine,
                         bool surface, PassTimer& timer) {
-  check_inputs(inputs, scene_, gobo_images_);
+  check_frame_inputs(scene_, inputs);
+  check_gobos(inputs, gobo_images_);
   geometry::camera_basis(inputs.camera);  // throws for a degenerate camera
   resize(inputs.width, inputs.height);
   inputs_ = inputs;

@@ -2,7 +2,6 @@
 
 #include "gpu/program.hpp"
 #include "methods/kit/noise.hpp"
-#include "reference/ray_caster.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -41,7 +40,7 @@ std::vector<SettingSpec> plane_settings() {
           {"lattice", T::integer, 0, 0, 512, {},
            "ξ on an n×n lattice mesh per plane, interpolated across its cells (Dobashi §5.1, Fig. 6: 5, 20, 80); "
            "0 = ξ per fragment. The light map, the cone and the shadow test are per fragment either way"},
-          {"jitter", T::choice, 0, 0, 0, {"none", "white", "blue"},
+          {"jitter", T::choice, 0, 0, 0, kit::jitter_choices,
            "per-pixel offset of the samples within their slabs (Dobashi §7): none = the middle; white or blue "
            "noise turn the planes' banding into noise"},
           {"sampling", T::choice, 0, 0, 0, {"lit", "plane"},
@@ -55,16 +54,13 @@ std::vector<SettingSpec> plane_settings() {
 }
 
 PlaneSettings PlaneSettings::from(const Settings& s) {
-  return {s.integer("planes"), s.real("spacing"), s.integer("lattice"), s.choice("jitter"),
-          s.choice("sampling") == "lit", s.boolean("clip")};
+  enum class Sampling { lit, plane };  // the `sampling` setting's choices, in order
+  return {s.integer("planes"), s.real("spacing"), s.integer("lattice"), s.option<kit::Jitter>("jitter"),
+          s.option<Sampling>("sampling") == Sampling::lit, s.boolean("clip")};
 }
 
 void PlanePass::prepare(const Scene& scene) {
-  const std::string defines = kit::frame_defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n";
-  program_ = gpu::make_program({{GL_VERTEX_SHADER, "methods/planes/planes.vert.glsl"},
-                                {GL_FRAGMENT_SHADER, "methods/planes/planes.frag.glsl"}},
-                               defines);
-  const std::vector<float> offsets = settings_.jitter == "blue" ? kit::blue_noise() : kit::white_noise();
+  const std::vector<float> offsets = settings_.jitter == kit::Jitter::blue ? kit::blue_noise() : kit::white_noise();
   noise_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32F, kit::noise_size, kit::noise_size);
   glTextureSubImage2D(noise_.id(), 0, 0, 0, kit::noise_size, kit::noise_size, GL_RED, GL_FLOAT, offsets.data());
   const std::vector<GLuint> indices = lattice_indices(std::max(settings_.lattice, 1));
@@ -78,11 +74,7 @@ void PlanePass::prepare(const Scene& scene) {
     glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
     invocations_ = gpu::Query(id);
   }
-  camera_ = geometry::camera_basis(scene.camera);
-  far_ = scene.camera.far;
-  const reference::RayCaster rays(scene);
-  volumes_.clear();
-  for (const Light& light : scene.lights) volumes_.push_back(kit::light_bounds(light, rays));
+  regions_.prepare(scene);
 }
 
 PlanePass::Slabs PlanePass::slabs(const kit::LightBounds& volume) const {
@@ -94,6 +86,9 @@ PlanePass::Slabs PlanePass::slabs(const kit::LightBounds& volume) const {
 }
 
 void PlanePass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
+  regions_.update(frame.inputs());
+  camera_ = geometry::camera_basis(frame.inputs().camera);
+  far_ = frame.inputs().camera.far;
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, zero);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
@@ -107,12 +102,15 @@ void PlanePass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   glBlendFunc(GL_ONE, GL_ONE);
   for (GLenum c = 0; c < 8; ++c) glEnable(GL_CLIP_DISTANCE0 + c);
   cos_edge_ = corner_cos(camera_.tan_half_fov_y, double(frame.width()) / frame.height());
-  glUseProgram(program_.id());
+  const gpu::Program& program = gpu::cached_program(
+      {{GL_VERTEX_SHADER, "methods/planes/planes.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/planes/planes.frag.glsl"}},
+      kit::frame_defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n");
+  glUseProgram(program.id());
   glBindTextureUnit(jitter_unit, noise_.id());
   glBindVertexArray(mesh_.id());
   planes_drawn_ = 0.0;
   if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
-  for (int i = 0; i < static_cast<int>(volumes_.size()); ++i) draw_light(i, volumes_[i]);
+  for (int i = 0; i < static_cast<int>(regions_.bounds().size()); ++i) draw_light(program, i, regions_.bounds()[i]);
   if (invocations_) {
     glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
     GLuint64 count = 0;
@@ -126,21 +124,21 @@ void PlanePass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void PlanePass::draw_light(int light, const kit::LightBounds& volume) {
+void PlanePass::draw_light(const gpu::Program& program, int light, const kit::LightBounds& volume) {
   const Slabs s = slabs(volume);
   if (s.count == 0) return;
   const std::vector<glm::vec4> clip = settings_.clip ? volume.clip : std::vector<glm::vec4>{};
-  gpu::set_uniform(program_, "light", light);
-  gpu::set_uniform(program_, "lattice", std::max(settings_.lattice, 1));
-  gpu::set_uniform(program_, "lattice_xi", settings_.lattice > 0 ? 1 : 0);
-  gpu::set_uniform(program_, "dz", s.dz);
-  gpu::set_uniform(program_, "jitter", settings_.jitter != "none" ? 1 : 0);
-  gpu::set_uniform(program_, "lit_sampling", settings_.lit_sampling ? 1 : 0);
-  gpu::set_uniform(program_, "clip_planes", clip);
-  gpu::set_uniform(program_, "clip_count", static_cast<int>(clip.size()));
+  gpu::set_uniform(program, "light", light);
+  gpu::set_uniform(program, "lattice", std::max(settings_.lattice, 1));
+  gpu::set_uniform(program, "lattice_xi", settings_.lattice > 0 ? 1 : 0);
+  gpu::set_uniform(program, "dz", s.dz);
+  gpu::set_uniform(program, "jitter", settings_.jitter != kit::Jitter::none ? 1 : 0);
+  gpu::set_uniform(program, "lit_sampling", settings_.lit_sampling ? 1 : 0);
+  gpu::set_uniform(program, "clip_planes", clip);
+  gpu::set_uniform(program, "clip_count", static_cast<int>(clip.size()));
   // A sample lies anywhere in its slab, up to dz/2 in depth, i.e. dz/(2 cos)
   // along its ray, from the middle where the clip distances are taken.
-  gpu::set_uniform(program_, "clip_margin", 0.5f * s.dz / cos_edge_);
+  gpu::set_uniform(program, "clip_margin", 0.5f * s.dz / cos_edge_);
   glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, s.count);
   planes_drawn_ += s.count;
 }

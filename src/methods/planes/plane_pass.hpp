@@ -6,6 +6,7 @@
 // the RGBA32F airlight target.
 #include "methods/kit/scene_frame.hpp"
 #include "methods/kit/light_bounds.hpp"
+#include "methods/kit/noise.hpp"
 
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
@@ -20,7 +21,7 @@ struct PlaneSettings {
   int planes = 100;              // n per light
   double spacing = 0.0;          // dz in metres of view depth; 0: from n
   int lattice = 0;               // cells per side of the lattice mesh; 0: ξ per fragment
-  std::string jitter = "none";   // none | white | blue
+  kit::Jitter jitter = kit::Jitter::none;
   bool lit_sampling = true;      // sample each slab's lit piece, else the slab (Dobashi)
   bool clip = true;              // clip planes to the influence volume
 
@@ -39,6 +40,8 @@ public:
   void run(const kit::SceneFrame& frame, const gpu::Texture& target);
 
   double planes_drawn() const { return planes_drawn_; }
+  // Of the last run: lights whose lit region was traced again, and its seconds.
+  const kit::LitRegions& regions() const { return regions_; }
   // Fragment shader invocations of the last run (the planes' fragments that
   // passed the depth test and were shaded); -1 without ARB_pipeline_statistics_query.
   double fragments() const { return fragments_; }
@@ -49,14 +52,13 @@ private:
     float dz = 0.0f;
   };
   Slabs slabs(const kit::LightBounds& volume) const;
-  void draw_light(int light, const kit::LightBounds& volume);
+  void draw_light(const gpu::Program& program, int light, const kit::LightBounds& volume);
 
   PlaneSettings settings_;
   geometry::CameraBasis camera_;
   double far_ = 0.0;
   float cos_edge_ = 1.0f;  // the smallest cos(ray, forward) in the image
-  std::vector<kit::LightBounds> volumes_;
-  gpu::Program program_;
+  kit::LitRegions regions_;
   gpu::Texture noise_;
   gpu::VertexArray mesh_;
   gpu::Buffer indices_;

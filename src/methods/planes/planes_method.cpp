@@ -21,7 +21,10 @@ private:
   }
 
   std::vector<std::pair<std::string, double>> stats() const override {
-    return {{"planes", pass_.planes_drawn()}, {"fragments", pass_.fragments()}};
+    return {{"planes", pass_.planes_drawn()},
+            {"fragments", pass_.fragments()},
+            {"rebuilt_lights", pass_.regions().rebuilt()},
+            {"rebuild_s", pass_.regions().seconds()}};
   }
 
   PlanePass pass_;
