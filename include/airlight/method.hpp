@@ -58,6 +58,7 @@ struct FrameImages {
   Image airlight;                      // L_air, W/(m²·sr)
   Image surface;                       // L_surf·T(d)
   std::vector<PassTime> times;         // per pass, in the order run
+  double readback_s = 0.0;             // reading the images back: what an interactive caller never pays
   std::vector<std::pair<std::string, double>> stats;  // method-specific counters
 };
 

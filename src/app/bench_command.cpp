@@ -191,7 +191,9 @@ FrameImages time_frames(Method& method, const Scene& scene, Size size, int warmu
     progress.advance();
     if (i < warmup) continue;
     frame_s.push_back(seconds);
-    add_pass_times(frame.times, &pass_s);
+    std::vector<PassTime> times = frame.times;
+    if (frame.readback_s > 0.0) times.push_back({"readback", frame.readback_s});  // part of the frame's time
+    add_pass_times(times, &pass_s);
   }
   m->frame = spread(frame_s);
   for (const auto& [pass, s] : pass_s) m->pass_median_s.emplace_back(pass, median(s));

@@ -126,7 +126,7 @@ Result reference_result(const Scene& scene, Size size, Pass pass, const fs::path
   r.note = frame.cached ? "cached" : "";
   r.render_s = frame.seconds;
   r.cached = frame.cached;
-  r.image = select_pass(FrameImages{std::move(frame.airlight), std::move(frame.surface), {}, {}}, pass);
+  r.image = select_pass(FrameImages{std::move(frame.airlight), std::move(frame.surface), {}, 0.0, {}}, pass);
   return r;
 }
 

@@ -63,7 +63,7 @@ void write_report(const RenderOptions& o, const Scene& scene, const Settings& se
       {"settings", settings.to_json()},
       {"size", {frame.airlight.width, frame.airlight.height}},
       {"pass", o.pass},
-      {"timings", {{"prepare_s", prepare_s}, {"render_s", render_s}, {"passes", passes}}},
+      {"timings", {{"prepare_s", prepare_s}, {"render_s", render_s}, {"readback_s", frame.readback_s}, {"passes", passes}}},
       {"output", output},
       {"stats", stats},
       {"peak_rss_mib", peak_rss_mib()}};

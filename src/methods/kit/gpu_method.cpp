@@ -5,6 +5,7 @@
 #include "gpu/state.hpp"
 
 #include <airlight/error.hpp>
+#include <chrono>
 #include <tuple>
 
 namespace airlight::kit {
@@ -121,10 +122,12 @@ void GpuMethod::write_engine_target(const EngineTarget& target, PassTimer& timer
 FrameImages GpuMethod::read_back() {
   if (!rendered_) throw Failure("read_back() before render_frame()");
   gpu::SavedState state;
+  const auto start = std::chrono::steady_clock::now();
   FrameImages images;
   images.airlight = gpu::read_image(airlight_, width_, height_);
   images.surface = gpu::read_image(frame_.surface(), width_, height_);
   images.times = times_;
+  images.readback_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   images.stats = stats();
   context_->check("read back");
   return images;
