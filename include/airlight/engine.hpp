@@ -13,14 +13,23 @@
 //   airlight::EngineFrame engine{...};            // per frame: depth, shadow maps, targets
 //   method->render_frame(airlight::frame_inputs(scene, w, h), engine);
 //
+// The context: prepare, render_frame, read_back and the method's destructor
+// run with the engine's context current on the calling thread; call
+// use_current_gl_context() before the first prepare (methods prepared before
+// it keep the headless context). airlight installs no debug callback in the
+// engine's context; it reads glGetError after each frame and throws Failure.
+//
 // GL state: render_frame saves and restores the current program, the draw and
 // read framebuffers, the viewport, the vertex array, the clip control, depth
 // test, function and mask, blending (enable, functions, equations), face
-// culling, scissor test, colour mask, clip distances 0–7 and the active texture
-// unit. It leaves its own objects bound to texture units 0–15, image units 0–3,
-// shader storage bindings 0–15 and uniform binding 0: rebind yours there after
-// it. The caller's textures are only read (depth, shadow maps) or written
-// (targets); their parameters are not changed.
+// culling, scissor and stencil tests, polygon offset fill, depth clamp,
+// framebuffer sRGB, colour mask, clip distances 0–7 and the active texture
+// unit. It leaves its own objects bound to texture units 0–15 (with no sampler
+// object), image units 0–3, shader storage bindings 0–15 and uniform binding 0:
+// rebind yours there after it. The caller's textures are only read (depth,
+// shadow maps: through airlight's own nearest sampler, so compare mode and
+// filters set for hardware PCF do not matter) or written (targets); their
+// parameters are not changed. Multisampled textures are not accepted.
 #include <array>
 #include <glm/mat4x4.hpp>
 #include <optional>
@@ -61,11 +70,14 @@ struct EngineShadow {
   DepthRange range = DepthRange::negative_one_to_one;
 };
 
-// Where the result goes; each texture the frame's size. 0 leaves that output out.
+// Where the result goes; each texture the frame's size (another size or format
+// throws InputError("EngineTarget", "airlight" | "transmittance" | "colour")
+// before anything is drawn). 0 leaves that output out.
 struct EngineTarget {
   unsigned airlight = 0;       // RGBA32F or RGBA16F: L_air, W/(m²·sr)
   unsigned transmittance = 0;  // RGBA32F or RGBA16F: T(d) per channel, what compositing needs
-  unsigned colour = 0;         // any colour-renderable texture holding L_surf: becomes L_surf·T + L_air
+  unsigned colour = 0;         // any colour-renderable texture holding linear L_surf in W/(m²·sr)
+                               // (before exposure and tone mapping): becomes L_surf·T + L_air
 };
 
 struct EngineFrame {

@@ -1,6 +1,6 @@
 #pragma once
 // Errors that reach the user. Bad input names the file and the key and exits 2;
-// any other failure exits 1 (DESIGN §5).
+// any other failure exits 1 (docs/design.md §5).
 #include <stdexcept>
 #include <string>
 

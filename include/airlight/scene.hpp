@@ -1,5 +1,5 @@
 #pragma once
-// The scene model (DESIGN §1, §4). Every object is a triangle mesh by the time
+// The scene model (docs/design.md §1, §4). Every object is a triangle mesh by the time
 // a scene is loaded; phase-function sums are flattened into weighted lobes.
 #include <airlight/image.hpp>
 #include <filesystem>
@@ -111,7 +111,7 @@ Scene load_scene(const std::filesystem::path& file);
 // Parses scene JSON text; `file` names it in messages and anchors relative paths.
 Scene parse_scene(const std::string& json_text, const std::filesystem::path& file);
 
-// Built-in scenes (DESIGN §4). Throws InputError for an unknown name.
+// Built-in scenes (docs/design.md §4). Throws InputError for an unknown name.
 Scene builtin_scene(const std::string& name);
 std::vector<std::string> builtin_scene_names();
 // The scene `scripts/demo` renders.

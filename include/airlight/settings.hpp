@@ -1,6 +1,6 @@
 #pragma once
 // Typed settings of a method: each declared by name with a type, a default and a
-// range (DESIGN §3), set from "key=value" text or JSON, reported as JSON.
+// range (docs/design.md §3), set from "key=value" text or JSON, reported as JSON.
 #include <map>
 #include <nlohmann/json_fwd.hpp>
 #include <string>

@@ -1,4 +1,4 @@
-// The `airlight` command end to end: exit statuses and messages (DESIGN §5).
+// The `airlight` command end to end: exit statuses and messages (docs/design.md §5).
 #include "app/command_test_support.hpp"
 #include "core/image_io.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // End-to-end tests of the `airlight` executable (AIRLIGHT_EXE): a work
 // directory per test process (removed when it ends), a run's exit status,
-// stdout and stderr, CSV output, and the bad-input check of DESIGN §5 — exit 2
+// stdout and stderr, CSV output, and the bad-input check of docs/design.md §5 — exit 2
 // with a message "airlight: error: <file or option>: <key>: ...".
 #include <gtest/gtest.h>
 #include <sys/wait.h>

@@ -1,5 +1,5 @@
 #pragma once
-// The subcommands of `airlight` (DESIGN §5). Each adds itself to the CLI and
+// The subcommands of `airlight` (docs/design.md §5). Each adds itself to the CLI and
 // runs when chosen; errors propagate as InputError (exit 2) or Failure (exit 1).
 #include <CLI/CLI.hpp>
 #include <functional>

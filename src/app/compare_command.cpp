@@ -1,4 +1,4 @@
-// `airlight compare` (DESIGN §5, issue 6): the reference and each named method
+// `airlight compare` (docs/design.md §5, issue 6): the reference and each named method
 // on one scene at one size, as a contact sheet and a CSV of their errors.
 #include "app/commands.hpp"
 #include "app/contact_sheet.hpp"
@@ -227,7 +227,7 @@ Run add_compare_command(CLI::App& cli) {
   command->add_option("--out", o->out, "contact sheet PNG")->required();
   command->add_option("--csv", o->csv, "CSV of the errors and times (README: Comparing)");
   command->add_option("--images", o->images, "directory for the images as PFM: reference.pfm, <index>_<method>.pfm");
-  command->add_option("--pass", o->pass, "what to compare (DESIGN §6 measures the airlight)")
+  command->add_option("--pass", o->pass, "what to compare (docs/design.md §6 measures the airlight)")
       ->check(CLI::IsMember({"airlight", "composite"}))
       ->capture_default_str();
   command->add_option("--exposure", o->exposure, "tone mapping: radiance is multiplied by this")

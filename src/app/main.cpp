@@ -1,4 +1,4 @@
-// airlight: renders light shafts by every method and compares them (DESIGN §5).
+// airlight: renders light shafts by every method and compares them (docs/design.md §5).
 #include "app/commands.hpp"
 
 #include <airlight/error.hpp>

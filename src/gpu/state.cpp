@@ -4,9 +4,10 @@ namespace airlight::gpu {
 namespace {
 
 // The capabilities SavedState records and restores.
-std::array<GLenum, 5 + 8> capabilities() {
-  std::array<GLenum, 5 + 8> caps{GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE, GL_SCISSOR_TEST, GL_STENCIL_TEST};
-  for (GLenum c = 0; c < 8; ++c) caps[5 + c] = GL_CLIP_DISTANCE0 + c;
+std::array<GLenum, 8 + 8> capabilities() {
+  std::array<GLenum, 8 + 8> caps{GL_DEPTH_TEST,          GL_BLEND,           GL_CULL_FACE,  GL_SCISSOR_TEST,
+                                 GL_STENCIL_TEST,        GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP, GL_FRAMEBUFFER_SRGB};
+  for (GLenum c = 0; c < 8; ++c) caps[8 + c] = GL_CLIP_DISTANCE0 + c;
   return caps;
 }
 

@@ -26,7 +26,7 @@ private:
   std::array<GLboolean, 4> colour_mask_{};
   GLint blend_src_rgb_ = 0, blend_dst_rgb_ = 0, blend_src_alpha_ = 0, blend_dst_alpha_ = 0;
   GLint blend_equation_rgb_ = 0, blend_equation_alpha_ = 0;
-  std::array<GLboolean, 5 + 8> enabled_{};  // capabilities(), in order
+  std::array<GLboolean, 8 + 8> enabled_{};  // capabilities(), in order
 };
 
 }  // namespace airlight::gpu

@@ -1,5 +1,5 @@
 #pragma once
-// Time per pass (DESIGN §3: every method reports its GPU time per pass). On a
+// Time per pass (docs/design.md §3: every method reports its GPU time per pass). On a
 // GPU: GL_TIME_ELAPSED queries. On llvmpipe the queries do not see compute
 // dispatches (and report garbage for draws), but there the CPU is the GPU: each
 // pass is bracketed by glFinish and timed by the wall clock instead. Passes do

@@ -1,4 +1,4 @@
-// analytic against the CPU reference (DESIGN §6) where the reference has no
+// analytic against the CPU reference (docs/design.md §6) where the reference has no
 // volumetric shadows to show: every phase function and the simplified model
 // with F from the table and from the shader, the depth edges where Kingston saw
 // the table fail (§5.2.2), table against shader, and the singular
@@ -116,11 +116,12 @@ TEST(Analytic, SettingsIncludeTheSharedGpuSettings) {
 
 class AnalyticPhase : public ::testing::TestWithParam<std::tuple<int, std::string>> {};
 
-// Γ is exact up to F (table: its bound; shader: ~1e-5) and float; the
-// reference's own tolerance is 0.1% per ray (rel_tol 1e-3). 0.5% is the table's
-// bound, which the whole image must keep. Only the isotropic case reads F; the
-// others run with either setting all the same (measured rRMSE ≤ 4e-4, most of
-// it one pixel at the wall's edge, where rasterization and Embree may disagree).
+// Γ is exact up to F (table: its bound; shader: its quadrature,
+// OpticsTwin.SunFunctionAndAirlight) and float; the reference's own tolerance is
+// 0.1% per ray (rel_tol 1e-3). 0.5% is the table's bound, which the whole image
+// must keep. Only the isotropic case reads F; the others run with either setting
+// all the same (their error is mostly one pixel at the wall's edge, where
+// rasterization and Embree may disagree).
 TEST_P(AnalyticPhase, MatchesTheReferenceWithoutOccluders) {
   const PhaseCase& c = phase_cases[std::get<0>(GetParam())];
   const std::string& f = std::get<1>(GetParam());
@@ -155,7 +156,7 @@ INSTANTIATE_TEST_SUITE_P(Phases, AnalyticPhase,
 // shadows anything (the wall, behind everything seen, cannot either). The
 // reference then computes Γ itself, to rel_tol 1e-5 here; every pixel, on
 // either side of every edge, must be within the table's bound plus float
-// rounding (1e-4: Γ's float evaluation, ~1e-5, and the GPU's float ray).
+// rounding (1e-4: Γ's float evaluation and the GPU's float ray).
 TEST(Analytic, NoArtefactAtDepthEdges) {
   Scene s;
   s.name = "depth_edges";

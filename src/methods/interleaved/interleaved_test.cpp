@@ -1,5 +1,5 @@
-// interleaved (Tóth 2009 §4.1) against raymarch and the CPU reference (DESIGN
-// §6): spreading the N samples over 4×4 pixels keeps raymarch's error plus a
+// interleaved (Tóth 2009 §4.1) against raymarch and the CPU reference
+// (docs/design.md §6): spreading the N samples over 4×4 pixels keeps raymarch's error plus a
 // small blur, the error falls as N grows, the depth-aware gather keeps shafts
 // from bleeding across the teapot's silhouette, and no configuration produces
 // NaN or Inf.
@@ -61,11 +61,9 @@ TEST(Interleaved, OnePixelBlocksAreRaymarch) {
 // 4×4 window instead of its own: its error is raymarch's with N samples plus
 // what differs between those rays and the light guide (gather=normalized, the
 // default) does not carry — V at shadow and silhouette edges. On teapot_spot
-// that blur adds ~0.010 (seen with equiangular steps, where raymarch's own
-// error is 0.0026); with uniform steps both are dominated by the same steps
-// past the spot's apex and the ratio is ~1. Bound: 1.25 × raymarch + 0.02.
-// Measured rRMSE, raymarch → interleaved: uniform 0.523 → 0.516, equiangular
-// 0.0026 → 0.0130.
+// that blur shows with equiangular steps, where raymarch's own error is small;
+// with uniform steps both are dominated by the same steps past the spot's apex
+// and the ratio is ~1. Bound: 1.25 × raymarch + 0.02.
 TEST(Interleaved, ErrorCloseToRaymarchWithTheSameSamples) {
   const Scene scene = builtin_scene("teapot_spot");
   const Image& ref = kit::test::reference_airlight(scene, width, height);
@@ -78,9 +76,8 @@ TEST(Interleaved, ErrorCloseToRaymarchWithTheSameSamples) {
 }
 
 // Uniform steps: the steps past the spot's apex dominate (see raymarch_test)
-// and the error falls about as 1/N (measured 2.92, 0.516, 0.175). Equiangular
-// steps leave the 4×4 blur of shadow edges, which does not depend on N, so the
-// error falls toward it (measured 0.023, 0.013, 0.010).
+// and the error falls about as 1/N. Equiangular steps leave the 4×4 blur of
+// shadow edges, which does not depend on N, so the error falls toward it.
 std::vector<double> errors_over_steps(const Scene& scene, const char* sampling) {
   const Image& ref = kit::test::reference_airlight(scene, width, height);
   std::vector<double> errors;
@@ -150,13 +147,12 @@ MaskedError masked_error(const Image& image, const Image& reference, const std::
 // march past the teapot to the floor behind it (or stop on it), so the shaft
 // and the teapot's volumetric shadow bleed over its outline. The depth-aware
 // gather keeps each pixel's window on its own surface. Equiangular steps, so
-// that the spot's apex adds no error of its own. Measured over the silhouette
-// band (443 pixels), rRMSE and max abs: gather=sum 0.225 → 0.035, 0.074 →
-// 0.017; normalized (whose light guide already scales by each ray's own
-// length) 0.047 → 0.034, 0.033 → 0.018. raymarch: 0.0055, 0.0029. (Uniform
-// steps with the normalized gather gain nothing there, 0.157 → 0.170: each
-// pixel's 4 of 64 samples are 0.8 m apart on the far rays, so a residue left
-// out can be the only one that met a narrow shaft.)
+// that the spot's apex adds no error of its own. The normalized gather's light
+// guide already scales by each ray's own length, so it gains less than
+// gather=sum (hence its looser bound). (Uniform steps with the normalized
+// gather gain nothing there: each pixel's 4 of 64 samples are 0.8 m apart on
+// the far rays, so a residue left out can be the only one that met a narrow
+// shaft.)
 TEST(Interleaved, DepthAwareGatherKeepsShaftsOffTheSilhouette) {
   const Scene scene = builtin_scene("teapot_spot");
   const Image& ref = kit::test::reference_airlight(scene, width, height);

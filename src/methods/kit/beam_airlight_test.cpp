@@ -68,10 +68,9 @@ FrameImages render(const std::string& method_name, const Scene& scene, const std
 
 // Uniform steps (~3 cm here) straddle the beam's faces, where the integrand
 // jumps: the midpoint rule's error there is O(step) per crossing, so the
-// rRMSE falls as 1/N — measured 0.084, 0.020, 0.0056, 0.0030 at N = 64, 256,
-// 1024, 4096 — down to the slab's shadow edges through the 1024² map (0.001
-// without the slab at N = 4096). Bound at N = 256: 0.03; and N = 1024 must
-// at least halve it (the error is the sampling's, not a bias).
+// rRMSE falls as 1/N, down to the slab's shadow edges through the 1024² map.
+// Bound at N = 256: 0.03; and N = 1024 must at least halve it (the error is
+// the sampling's, not a bias).
 TEST(BeamAirlight, RaymarchMatchesTheReference) {
   const Scene scene = beam_scene();
   const Image reference = render("reference", scene, {}).airlight;

@@ -10,6 +10,7 @@
 #include "reference/ray_caster.hpp"
 
 #include "core/metrics.hpp"
+#include "methods/kit/test_support.hpp"
 
 #include <airlight/engine.hpp>
 #include <airlight/error.hpp>
@@ -148,13 +149,7 @@ EngineMaps engine_maps(const Scene& scene, const reference::RayCaster& rays) {
 }
 
 std::unique_ptr<Method> prepared(const Scene& scene) {
-  const MethodInfo& info = find_method("raymarch");
-  Settings settings(info.settings);
-  settings.set("steps=64", "test");
-  settings.set("sampling=equiangular", "test");
-  auto method = info.create(settings);
-  method->prepare(scene);
-  return method;
+  return test::prepared(find_method("raymarch"), scene, {"steps=64", "sampling=equiangular"});
 }
 
 Image read_texture(GLuint texture) {
@@ -277,7 +272,7 @@ TEST(EngineState, CallersStateIsRestored) {
   context.check("engine state");
 }
 
-TEST(EngineState, TargetsOfAnotherFormatOrSizeAreRefusedByName) {
+TEST(EngineState, BadTargetsAndShadowMapsAreRefusedByName) {
   gpu::Context::headless();
   const Scene scene = builtin_scene("teapot_spot");
   auto method = prepared(scene);
@@ -298,6 +293,18 @@ TEST(EngineState, TargetsOfAnotherFormatOrSizeAreRefusedByName) {
     ADD_FAILURE() << "a target of another size was accepted";
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "EngineTarget: transmittance: is 32x48, the frame is 64x48");
+  }
+  engine.target.transmittance = 0;
+  FrameInputs sun = frame_inputs(scene, width, height);
+  sun.lights[0].type = LightType::directional;  // a light may change type between frames
+  EngineShadow cube;
+  cube.kind = EngineShadow::Kind::cube;
+  engine.shadows = {cube};
+  try {
+    method->render_frame(sun, engine);
+    ADD_FAILURE() << "a cube map for a directional light was accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "EngineFrame: shadows[0]: is a cube map, but light 0 is directional (it needs a 2D map)");
   }
 }
 

@@ -34,6 +34,24 @@ void check_size(GLuint texture, const char* what, int width, int height) {
                          "x" + std::to_string(height));
 }
 
+// An engine's frame against this frame's inputs, before anything is drawn.
+void check_engine(const EngineFrame& engine, const FrameInputs& inputs) {
+  const EngineTarget& t = engine.target;
+  for (const auto& [texture, what] : {std::pair{t.airlight, "airlight"}, std::pair{t.transmittance, "transmittance"}})
+    if (texture) {
+      check_size(texture, what, inputs.width, inputs.height);
+      image_format(texture, what);
+    }
+  if (t.colour) check_size(t.colour, "colour", inputs.width, inputs.height);
+  if (engine.shadows.size() > inputs.lights.size())
+    throw InputError("EngineFrame", "shadows", "has more entries than the frame has lights");
+  for (size_t i = 0; i < engine.shadows.size(); ++i)
+    if (engine.shadows[i] && engine.shadows[i]->kind == EngineShadow::Kind::cube &&
+        inputs.lights[i].type == LightType::directional)
+      throw InputError("EngineFrame", "shadows[" + std::to_string(i) + "]",
+                       "is a cube map, but light " + std::to_string(i) + " is directional (it needs a 2D map)");
+}
+
 }  // namespace
 
 std::vector<SettingSpec> gpu_settings(std::vector<SettingSpec> own) {
@@ -66,6 +84,7 @@ void GpuMethod::render_frame(const FrameInputs& inputs, const EngineFrame& engin
 
 void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
   if (!context_) throw Failure("render_frame() before prepare()");
+  if (engine) check_engine(*engine, inputs);
   gpu::SavedState state;
   PassTimer timer;
   frame_.render(inputs, frame_settings_, engine, !engine, timer);
@@ -92,7 +111,6 @@ void GpuMethod::write_engine_target(const EngineTarget& target, PassTimer& timer
   for (const auto& [texture, what, transmittance] :
        {std::tuple{target.airlight, "airlight", false}, std::tuple{target.transmittance, "transmittance", true}}) {
     if (!texture) continue;
-    check_size(texture, what, width_, height_);
     const ImageFormat format = image_format(texture, what);
     const Program& program = gpu::cached_compute_program(
         "methods/kit/engine_target.comp.glsl",
@@ -103,7 +121,6 @@ void GpuMethod::write_engine_target(const EngineTarget& target, PassTimer& timer
     gpu::dispatch_pixels(width_, height_);
   }
   if (!target.colour) return;
-  check_size(target.colour, "colour", width_, height_);
   const gpu::Framebuffer fbo = gpu::make_framebuffer();
   glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.colour, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());

@@ -37,19 +37,9 @@ inline Scene case_scene(const std::string& name) {
   return builtin_scene(name);
 }
 
-inline std::unique_ptr<Method> prepared(const std::string& method_name, const Scene& scene,
-                                        const std::vector<std::string>& assignments) {
-  const MethodInfo& info = find_method(method_name);
-  Settings settings(info.settings);
-  for (const auto& a : assignments) settings.set(a, "test");
-  auto method = info.create(settings);
-  method->prepare(scene);
-  return method;
-}
-
 inline FrameImages render_case(const std::string& method_name, const Scene& scene,
                                const std::vector<std::string>& assignments) {
-  return render(*prepared(method_name, scene, assignments), scene, width, height);
+  return render(find_method(method_name), scene, assignments, width, height);
 }
 
 inline const Image& reference_airlight(const std::string& scene_name) {
@@ -111,7 +101,7 @@ TEST_P(Quality, AirlightWithinTolerance) {
 TEST_P(Quality, MovedFrameWithinTolerance) {
   const Case& c = GetParam();
   const Scene scene = case_scene(c.scene);
-  auto method = prepared(c.method, scene, c.settings);
+  auto method = prepared(find_method(c.method), scene, c.settings);
   method->render_frame(frame_inputs(scene, width, height));
   const FrameInputs moved = moved_inputs(scene);
   method->render_frame(moved);
@@ -123,7 +113,7 @@ TEST_P(Quality, MovedFrameWithinTolerance) {
 TEST_P(Quality, SecondFrameIsIdentical) {
   const Case& c = GetParam();
   const Scene scene = case_scene(c.scene);
-  auto method = prepared(c.method, scene, c.settings);
+  auto method = prepared(find_method(c.method), scene, c.settings);
   const FrameImages first = render(*method, scene, width, height), second = render(*method, scene, width, height);
   EXPECT_TRUE(first.airlight.pixels == second.airlight.pixels);
   EXPECT_TRUE(first.surface.pixels == second.surface.pixels);

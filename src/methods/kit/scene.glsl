@@ -37,7 +37,7 @@ int volume_count() { return frame.volume_count; }
 bool simplified_model() { return frame.light_model == LIGHT_MODEL_SIMPLIFIED; }
 ivec2 frame_size() { return ivec2(frame.size); }
 
-// ---- camera (DESIGN §5, geometry::primary_ray) ------------------------------
+// ---- camera (docs/design.md §5, geometry::primary_ray) ------------------------------
 
 // The unit ray direction through `pixel`, in GL window coordinates (origin at the
 // bottom-left corner; a pixel's centre is its integer corner + 0.5, as
@@ -96,7 +96,7 @@ Beam light_beam(int i) {
 
 // optics::light_leg_depth: to the light's position; a beam, emitted at its
 // aperture, back to the aperture's plane (0 upstream of it); other directional
-// lights only through bounded volumes (DESIGN §1).
+// lights only through bounded volumes (docs/design.md §1).
 vec3 light_leg_depth(int i, vec3 x) {
   if (simplified_model()) return vec3(0.0);
   if (lights[i].type != LIGHT_DIRECTIONAL) return optical_depth(x, lights[i].position);
@@ -229,7 +229,7 @@ float surface_visibility(int i, vec3 x, vec3 n) {
   return shadow_test(i, x + n * (frame.shadow_bias * shadow_texel(i, x)), 0.0);
 }
 
-// ---- single scattering (optics::inscatter, DESIGN §1) -------------------------
+// ---- single scattering (optics::inscatter, docs/design.md §1) -------------------------
 
 // inscatter without the light map: σs·p(cos θ)·I/r²·exp(−τ_light)·exp(−τ_eye)
 // with I the light's unmapped intensity (or irradiance), at x on a view ray

@@ -19,7 +19,7 @@ namespace {
 
 constexpr int width = 128, height = 96;
 
-// Relative RMSE of DESIGN §6: sqrt(mean((m − r)²)) / mean(r) over pixels and channels.
+// Relative RMSE of docs/design.md §6: sqrt(mean((m − r)²)) / mean(r) over pixels and channels.
 const auto rel_rmse = [](const Image& m, const Image& r) {
   double squares = 0.0, sum = 0.0;
   for (size_t i = 0; i < r.pixels.size(); ++i)
@@ -221,7 +221,7 @@ TEST(SceneFrame, CubeShadowMapForAPointLight) {
 TEST(SceneFrame, DirectionalLightOrthographicMapAndVolumeOnItsLeg) {
   Scene s = shadow_scene(directional_light({0.4f, -1.0f, -0.3f}, 2.0f));
   s.name = "directional";
-  // A volume the light crosses on its way to the floor (DESIGN §1: the only
+  // A volume the light crosses on its way to the floor (docs/design.md §1: the only
   // extinction on a directional light's leg) and the view rays cross too.
   Volume v;
   v.min = {-3.0f, 0.5f, -3.0f};
@@ -258,7 +258,7 @@ TEST(SceneFrame, BeamWithGoboOntoTheFloor) {
   Scene s = shadow_scene(beam_light({0.3f, -1.0f, -0.2f}));
   s.name = "beam";
   // Only the beam's footprint is lit, so the image's mean is low and each
-  // pixel flipping at a shadow edge weighs much: measured 0.110, all of it two
+  // pixel flipping at a shadow edge weighs much: all of the error is two
   // pixels whose centres lie 2 mm inside the box's shadow edge (x = 0.8), half
   // a texel of the map (1024² over the 4 m aperture: 4 mm texels), whose
   // nearest texel lies outside the shadow. Every other pixel, gobo and beam

@@ -1,7 +1,7 @@
 // Surface pass: L_surf·T(d) per pixel, exactly as reference.cpp's trace():
 // Lambertian with ambient, each light's arrival (cone, beam, gobo, falloff), shadow-map
 // visibility, a light behind the triangle's plane blocked, extinction on the
-// light's leg and on the eye's (DESIGN §1); 0 where the ray reaches the far plane.
+// light's leg and on the eye's (docs/design.md §1); 0 where the ray reaches the far plane.
 #include "methods/kit/scene.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -11,19 +11,26 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <map>
+#include <memory>
 #include <string>
 #include <tuple>
 #include <vector>
 
 namespace airlight::kit::test {
 
-inline FrameImages render(const MethodInfo& info, const Scene& scene, const std::vector<std::string>& assignments, int width,
-                    int height) {
+// The method with its settings set from "key=value" assignments, prepared with the scene.
+inline std::unique_ptr<Method> prepared(const MethodInfo& info, const Scene& scene,
+                                        const std::vector<std::string>& assignments) {
   Settings settings(info.settings);
   for (const auto& a : assignments) settings.set(a, "test");
   auto method = info.create(settings);
   method->prepare(scene);
-  return airlight::render(*method, scene, width, height);
+  return method;
+}
+
+inline FrameImages render(const MethodInfo& info, const Scene& scene, const std::vector<std::string>& assignments,
+                          int width, int height) {
+  return airlight::render(*prepared(info, scene, assignments), scene, width, height);
 }
 
 // The reference's airlight, rendered once per scene name and size in a process.

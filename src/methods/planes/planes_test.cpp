@@ -57,7 +57,7 @@ TEST(Planes, LitSamplingBeatsPlaneSampling) {
   std::printf("teapot_spot: rRMSE %.4f with 15 planes sampling=lit, %.4f with 75 sampling=plane\n", lit, plane);
   EXPECT_LT(lit, 0.1 * plane);
   // What is left is the 1024² shadow map's texels along the teapot's shadow
-  // edges, as for raymarch (quality_test: 0.0009 at N = 256 equiangular).
+  // edges, as for raymarch at N = 256 equiangular (quality_test).
   EXPECT_LT(lit, 0.005);
 }
 
@@ -87,7 +87,7 @@ TEST(Planes, LatticeErrorFallsWithItsResolution) {
   }
   // Cells of 1.6×1.2 pixels at 128×96: only ξ's 1/r² peak beside the spot's
   // apex, which is in view, curves within a cell (Dobashi Fig. 6's "differences
-  // around the light source"). Measured 0.19, 0.019, 0.0012.
+  // around the light source").
   EXPECT_LT(previous, 0.005);
 }
 
@@ -104,7 +104,7 @@ TEST(Planes, ClippingSkipsOnlyUnlitFragments) {
   };
   std::printf("fragments: %.0f clipped, %.0f unclipped\n", stat(clipped, "fragments"), stat(unclipped, "fragments"));
   if (stat(clipped, "fragments") < 0) GTEST_SKIP() << "no GL_ARB_pipeline_statistics_query to count fragments";
-  // The 25° cone's pyramid covers a third of the view's slabs (measured 0.38).
+  // The 25° cone's pyramid covers about a third of the view's slabs.
   EXPECT_LT(stat(clipped, "fragments"), 0.5 * stat(unclipped, "fragments"));
 }
 
@@ -142,7 +142,7 @@ TEST(Planes, EveryFeatureMatchesReference) {
   const double e = error_of(kit::test::every_feature_scene(), {"planes=200"});
   std::printf("every_feature, 200 planes: rRMSE %.4f\n", e);
   // Midpoint slabs through the volume's faces and the shadows' edges; the
-  // 1024² shadow maps' texels (measured 0.0034).
+  // 1024² shadow maps' texels.
   EXPECT_LT(e, 0.01);
 }
 
@@ -154,7 +154,7 @@ TEST(Planes, CameraInsideTheCone) {
   s.lights = {kit::test::make_light(LightType::spot, {0.0f, 3.5f, 10.0f}, {0.0f, -0.15f, -1.0f}, 300.0f, 30.0f)};
   const double e = error_of(s, {"planes=200"});
   std::printf("camera inside the cone, 200 planes: rRMSE %.4f\n", e);
-  // Midpoint slabs across the shadows' edges and the volume's faces (measured 0.0012).
+  // Midpoint slabs across the shadows' edges and the volume's faces.
   EXPECT_LT(e, 0.05);
 }
 
@@ -168,10 +168,10 @@ TEST(Planes, StageGoboPatternMatchesReferenceSurface) {
   const double mismatch = pattern_mismatch(surface, reference, 0.5f * e.mean_reference);
   std::printf("stage surface: rRMSE %.3g, max abs %.3g, dot pattern mismatch %.3g of the pixels\n", e.rel_rmse,
               e.max_abs, mismatch);
-  // The same formulas in float against double (measured 1.5e-5); a pixel whose
+  // The same formulas in float against double; a pixel whose
   // shadow test flipped at a prop's shadow edge (1024² map) would exceed it.
   EXPECT_LT(e.rel_rmse, 1e-3);
-  EXPECT_LT(mismatch, 0.002);  // ≤ 24 of 12288 pixels on the wrong side of a dot's edge (measured 0)
+  EXPECT_LT(mismatch, 0.002);  // ≤ 24 of 12288 pixels on the wrong side of a dot's edge
 }
 
 }  // namespace

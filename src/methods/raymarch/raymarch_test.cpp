@@ -1,4 +1,4 @@
-// raymarch against the CPU reference (DESIGN §6): the error falls as the steps
+// raymarch against the CPU reference (docs/design.md §6): the error falls as the steps
 // grow, equiangular steps integrate the 1/r² peak next to a light, jitter keeps
 // the mean, every feature of the model is summed, and no configuration produces
 // NaN or Inf.
@@ -38,7 +38,7 @@ FrameImages raymarch(const Scene& scene, const std::vector<std::string>& assignm
 
 const Image& reference_airlight(const Scene& scene) { return kit::test::reference_airlight(scene, width, height); }
 
-// every_feature_scene's reference takes ~8 s at 128×96 (three lights, a volume,
+// every_feature_scene's reference is slow at 128×96 (three lights, a volume,
 // a two-lobe phase function): its tests run at a quarter of the pixels.
 constexpr int small_width = 64, small_height = 48;
 
@@ -65,8 +65,8 @@ TEST(Raymarch, SettingsIncludeTheSharedGpuSettings) {
 // scale of a step. In teapot_spot the rays of the image's top-left corner pass
 // within decimetres of the spot's apex, where I/r² peaks over a width ~r0 while
 // the steps are 50 m (far plane) / N: 3 m at N = 16, 0.2 m at N = 256. The error
-// there falls about as 1/N; it dominates the image's RMSE (measured 2.70, 0.52,
-// 0.10 at 128×96), so the test asserts the fall, by at least 2× per 4× steps.
+// there falls about as 1/N and dominates the image's RMSE, so the test asserts
+// the fall, by at least 2× per 4× steps.
 TEST(Raymarch, ErrorFallsAsStepsGrow) {
   const Scene scene = builtin_scene("teapot_spot");
   const Image& ref = reference_airlight(scene);
@@ -87,10 +87,8 @@ TEST(Raymarch, ErrorFallsAsStepsGrow) {
 // Equiangular steps (Kulla & Fajardo 2012) integrate the 1/r² factor exactly,
 // so the peak next to a light costs nothing and the midpoint rule's 1/N² is
 // back; inside a spot's cone the hard edge is an end of the interval, not a
-// step's middle. N = 64, uniform → equiangular, measured: teapot_spot 0.523 →
-// 0.0026 (200×), biri_sphere (the spot's apex in view) 20.1 → 0.016 (1300×);
-// equiangular at N = 16, 64, 256: 0.0091, 0.0026, 0.0009 and 0.051, 0.016,
-// 0.0038. What is left are shadow edges, which fall as 1/N.
+// step's middle. biri_sphere has the spot's apex in view. What is left are
+// shadow edges, which fall as 1/N.
 class Equiangular : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(Equiangular, CutsTheErrorNextToTheLight) {
@@ -122,11 +120,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Equiangular, ::testing::Values("teapot_spot", "
 TEST(Raymarch, LightsObjectsAndMediumMoveBetweenFrames) {
   const Scene scene = every_feature_scene();
   const MethodInfo& info = find_method("raymarch");
-  Settings settings(info.settings);
-  settings.set("steps=256", "test");
-  settings.set("sampling=equiangular", "test");
-  auto method = info.create(settings);
-  method->prepare(scene);
+  auto method = prepared(info, scene, {"steps=256", "sampling=equiangular"});
   method->render_frame(frame_inputs(scene, small_width, small_height));
   FrameInputs moved = frame_inputs(scene, small_width, small_height);
   moved.lights[0].position += glm::vec3(1.0f, -0.5f, 0.0f);
@@ -172,16 +166,15 @@ TEST(Raymarch, SimplifiedLightModel) {
   scene.light_model = {LightModelType::simplified, 1.0f, 0.5f};  // Nilsson eq. 2.13: I / (a1 r² + a0)
   const double error = rel_rmse(raymarch_small(scene, {"steps=256"}).airlight, small_reference(scene));
   std::printf("every_feature_simplified steps=256: airlight rel. RMSE %.5f\n", error);
-  EXPECT_LT(error, 0.01);  // as SumsEveryFeatureOfTheModel (measured 0.0003)
+  EXPECT_LT(error, 0.01);  // as SumsEveryFeatureOfTheModel
 }
 
 // Jittered samples are a stratified estimate of the same integral: over the
 // whole image the mean agrees with the midpoint rule's and the reference's.
-// Measured at N = 32 (0.6 m steps), 64×48: reference 0.07715, midpoint 0.07667
-// (−0.6%, the rule's own error at the cone's and the volume's edges), white
-// 0.07725, blue 0.07715. Per pixel the jittered error is ~1/N, random in sign
-// over 3072 pixels, so the means stay within 1% of the reference and 1.5% of
-// the midpoint's.
+// At N = 32 (0.6 m steps) the midpoint rule's mean has its own error at the
+// cone's and the volume's edges. Per pixel the jittered error is ~1/N, random
+// in sign over 3072 pixels, so the means stay within 1% of the reference and
+// 1.5% of the midpoint's.
 TEST(Raymarch, JitterKeepsTheMean) {
   const Scene scene = every_feature_scene();
   const double reference_mean = mean(small_reference(scene));

@@ -57,7 +57,7 @@ bool covers(const std::vector<glm::dvec2>& pieces, double t) {
 // midpoint w + t·dir) to a few ε·(|w| + |t|), which moves the surface by that
 // much; and the angle (sin and cos of α, angle_between) to a few ε rad, which
 // moves it by |v|·that at distance |v| from the apex. 16ε each: the ends
-// measured use at most 6% of it (end/allowed in the table), and GLSL leaves
+// measured use a small part of it (end/allowed in the table), and GLSL leaves
 // the precision of sin and cos open, so other drivers may need more than
 // llvmpipe.
 struct ConeRounding {

@@ -107,9 +107,8 @@ void check_scene(const std::string& name, const Scene& scene, double tolerance, 
 // Tolerances, relative to the largest channel: float geometry and exp (the Sun
 // twin's 2e-4, OpticsTwin.SunFunctionAndAirlight), Biri's sums of panels × 8
 // nodes in float, cone and beam ends in float (~1e-6 m on segments of
-// metres): 1e-3 (measured 2.7e-4). The table variant differs only on the
-// isotropic Sun path, by at most the SunTable path's bound (gamma_test.cpp:
-// 0.5%, measured 4.6e-4 there): 5e-3 (measured 5.9e-4).
+// metres): 1e-3. The table variant differs only on the isotropic Sun path, by
+// at most the SunTable path's bound (gamma_test.cpp: 0.5%): 5e-3.
 TEST(GammaTwin, BiriPhaseFunctions) {
   Phase hg;
   hg.lobes = {PhaseLobe{PhaseType::henyey_greenstein, 0.6f, 0.7f}, PhaseLobe{PhaseType::murky, 0.0f, 0.3f}};

@@ -466,14 +466,14 @@ TEST(OpticsTwin, SunFunctionAndAirlight) {
              " σt " + std::to_string(c.sigma_t) + " d_lv " + std::to_string(c.d_lv) + " γ " +
              std::to_string(c.gamma) + " d_vp " + std::to_string(c.d_vp);
     };
-    // Quadrature ≤ 1.1e-5 relative (12 + 12 nodes, measured in float on the
-    // CPU over this domain), plus float exp/tan of exponents up to 16: 1e-4.
+    // The quadrature's error (12 + 12 nodes, over this domain) plus float
+    // exp/tan of exponents up to 16: 1e-4.
     const double f = optics::sun_F(c.u, c.v);
     f_errors.check(out[i].x, f, 1e-4 * f, where);
     // The same quadrature on ranges from γ/2, bounds from float geometry. Its
-    // worst case, ~7e-5 (9e-6 with 16 nodes: quadrature, not rounding),
-    // is a long ray passing within ~1e-4 rad of the light, where part B holds
-    // both the 1/r² tail and the extinction cut-off: 2e-4. Below 1e-30 (optical
+    // worst case (quadrature, not rounding: it shrinks with more nodes) is a
+    // long ray passing very close to the light, where part B holds both the
+    // 1/r² tail and the extinction cut-off: 2e-4. Below 1e-30 (optical
     // depths > ~60) only finiteness. Within 1e-5 m of the ray the clamps differ
     // (the C++ clamps r at 1 µm, the twin r0): only finiteness.
     const double r0 = c.d_lv * std::abs(std::sin(double(c.gamma)));
