@@ -13,7 +13,6 @@ namespace {
 
 using namespace kit::test;
 
-
 constexpr int width = 128, height = 96;
 
 double error_of(const Scene& scene, const std::vector<std::string>& settings) {
@@ -172,6 +171,30 @@ TEST(Planes, StageGoboPatternMatchesReferenceSurface) {
   // shadow test flipped at a prop's shadow edge (1024² map) would exceed it.
   EXPECT_LT(e.rel_rmse, 1e-3);
   EXPECT_LT(mismatch, 0.002);  // ≤ 24 of 12288 pixels on the wrong side of a dot's edge
+}
+
+// What a frame rebuilds (docs/design.md §3): each light's lit region is traced
+// again only when that light moved, and every light's when an object moved.
+TEST(Planes, RebuildsOnlyTheLitRegionsAFrameMoves) {
+  const Scene scene = builtin_scene("three_lights");
+  auto method = prepared(find_method("planes"), scene, {"planes=15"});
+  const auto rebuilt = [&](const FrameInputs& inputs) {
+    method->render_frame(inputs);
+    for (const auto& [name, value] : method->read_back().stats)
+      if (name == "rebuilt_lights") return static_cast<int>(value);
+    ADD_FAILURE() << "no rebuilt_lights counter";
+    return -1;
+  };
+  FrameInputs inputs = frame_inputs(scene, 32, 24);
+  EXPECT_EQ(rebuilt(inputs), 3);  // the first frame traces every light
+  inputs.camera.position.x += 0.5f;
+  inputs.lights[2].irradiance *= 2.0f;
+  EXPECT_EQ(rebuilt(inputs), 0);  // the camera and a colour change no lit region
+  inputs.lights[1].position.y += 0.3f;
+  EXPECT_EQ(rebuilt(inputs), 1);
+  inputs.transforms.assign(scene.meshes.size(), glm::mat4(1.0f));
+  inputs.transforms[0][3] = glm::vec4(0.0f, 0.1f, 0.0f, 1.0f);
+  EXPECT_EQ(rebuilt(inputs), 3);  // an object moved: every light's rays meet it anew
 }
 
 }  // namespace
