@@ -36,6 +36,9 @@ struct FrameInputs {
   // Object → world per mesh of the prepared scene, in Scene::meshes' order;
   // empty means every mesh stays where the scene put it.
   std::vector<glm::mat4> transforms;
+  // Whether the surface term L_surf·T(d) is wanted as well (read_back's
+  // `surface`); false skips its pass. An engine's frame never computes it.
+  bool surface = true;
 };
 
 // The scene as loaded, at width × height: the first frame's inputs.
@@ -77,8 +80,9 @@ public:
 };
 
 // Batch use (render, compare, bench): the scene as loaded at width × height,
-// rendered and read back. `method` must have been prepared with `scene`.
-FrameImages render(Method& method, const Scene& scene, int width, int height);
+// rendered and read back (with the surface term when `surface`). `method` must
+// have been prepared with `scene`.
+FrameImages render(Method& method, const Scene& scene, int width, int height, bool surface = true);
 
 struct MethodInfo {
   std::string name;

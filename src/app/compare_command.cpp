@@ -140,7 +140,7 @@ Result method_result(const Entry& entry, const Scene& scene, Size size, Pass pas
   method->prepare(scene);
   r.prepare_s = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  r.image = select_pass(render(*method, scene, size.width, size.height), pass);
+  r.image = select_pass(render(*method, scene, size.width, size.height, pass != Pass::airlight), pass);
   r.render_s = seconds_since(start);
   return r;
 }

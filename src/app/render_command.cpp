@@ -83,9 +83,10 @@ void render(const RenderOptions& o) {
   method->prepare(scene);
   const double prepare_s = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  const FrameImages frame = airlight::render(*method, scene, size.width, size.height);
+  const Pass pass = parse_pass(o.pass);
+  const FrameImages frame = airlight::render(*method, scene, size.width, size.height, pass != Pass::airlight);
   const double render_s = seconds_since(start);
-  const Image image = select_pass(frame, parse_pass(o.pass));
+  const Image image = select_pass(frame, pass);
   const nlohmann::json output = image_stats(image, o.method);
   write_image(image, o.out, ToneMap{o.exposure});
   if (!o.report.empty()) write_report(o, scene, settings, frame, output, prepare_s, render_s);

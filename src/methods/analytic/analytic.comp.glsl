@@ -15,6 +15,6 @@ void main() {
   vec3 dir = pixel_ray(vec2(pixel) + 0.5);
   float d = surface_distance(pixel);
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < light_count(); ++i) sum += closed_form_airlight(i, frame.eye, dir, 0.0, d);
+  for (int i = 0; i < LIGHT_COUNT; ++i) sum += closed_form_airlight(i, frame.eye, dir, 0.0, d);
   imageStore(airlight_out, pixel, vec4(sum, 1.0));
 }

@@ -49,7 +49,7 @@ private:
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     gpu::ScopedPass pass(timer, "airlight");
-    const std::string defines = kit::frame_defines() + "#define BINDING_SUN_TABLE " +
+    const std::string defines = frame.defines() + "#define BINDING_SUN_TABLE " +
                                 std::to_string(sun_table_unit) + "\n" + (table_ ? "#define SUN_F_TABLE\n" : "");
     glUseProgram(gpu::cached_compute_program("methods/analytic/analytic.comp.glsl", defines).id());
     if (table_) glBindTextureUnit(sun_table_unit, table_texture_.id());
@@ -57,6 +57,8 @@ private:
     gpu::dispatch_pixels(frame.width(), frame.height());
     closed_forms_ = static_cast<double>(frame.width()) * frame.height() * frame.light_count();
   }
+
+  bool uses_shadow_maps() const override { return false; }  // Γ is unoccluded
 
   std::vector<std::pair<std::string, double>> stats() const override { return {{"closed_forms", closed_forms_}}; }
 

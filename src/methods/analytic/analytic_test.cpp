@@ -266,11 +266,21 @@ TEST(Analytic, SingularConfigurations) {
   }
 }
 
+// A frame that wants L_air alone has no surface pass either: G-buffer and Γ.
+TEST(Analytic, AirlightAloneRunsNoShadowOrSurfacePass) {
+  const Scene scene = phase_scene(phase_cases[0]);
+  auto method = prepared(find_method("analytic"), scene, {});
+  std::vector<std::string> passes;
+  for (const auto& t : render(*method, scene, width, height, false).times) passes.push_back(t.pass);
+  EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "airlight"}));
+}
+
 TEST(Analytic, ReportsItsPassAndClosedForms) {
   const FrameImages frame = analytic(phase_scene(phase_cases[0]), "table");
   std::vector<std::string> passes;
   for (const auto& t : frame.times) passes.push_back(t.pass);
-  EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "shadow", "surface", "airlight"}));
+  // Γ reads no shadow map: the frame draws none (docs/design.md §3).
+  EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "surface", "airlight"}));
   ASSERT_EQ(frame.stats.size(), 1u);
   EXPECT_EQ(frame.stats[0].first, "closed_forms");
   EXPECT_EQ(frame.stats[0].second, double(width) * height * 2);  // two lights

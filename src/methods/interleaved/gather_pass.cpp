@@ -19,7 +19,7 @@ void GatherPass::run(const kit::SceneFrame& frame, const gpu::Texture& image) {
   }
   const gpu::Program& program = gpu::cached_compute_program(
       "methods/interleaved/gather.comp.glsl",
-      kit::frame_defines() + "#define BINDING_PARTIAL " + std::to_string(partial_unit) + "\n");
+      frame.defines() + "#define BINDING_PARTIAL " + std::to_string(partial_unit) + "\n");
   glUseProgram(program.id());
   gpu::set_uniform(program, "block", settings_.block);
   gpu::set_uniform(program, "depth_aware", settings_.depth_aware ? 1 : 0);

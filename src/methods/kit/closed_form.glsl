@@ -11,22 +11,18 @@
 layout(binding = BINDING_SUN_TABLE) uniform sampler2D sun_table;
 #endif
 
-bool isotropic_medium() {
-  for (int k = 0; k < frame.medium_lobes; ++k)
-    if (lobes[k].type != PHASE_ISOTROPIC) return false;
-  return true;
-}
+bool isotropic_medium() { return MEDIUM_ISOTROPIC != 0; }
 
 // Sun et al. (Kingston eqs. 36-40) over [a, b] per channel, times the eye's extinction to a.
 vec3 sun_piece(int i, vec3 eye, vec3 dir, float a, float b) {
   vec3 origin = eye + a * dir, sum;
   for (int c = 0; c < 3; ++c) {
 #ifdef SUN_F_TABLE
-    float g = sun_airlight_table(sun_table, frame.medium_sigma_s[c], frame.medium_sigma_t[c], lights[i].color[c], origin, dir,
-                                 lights[i].position, b - a);
+    float g = sun_airlight_table(sun_table, frame.medium_sigma_s[c], frame.medium_sigma_t[c], LIGHT(i).color[c], origin, dir,
+                                 LIGHT(i).position, b - a);
 #else
-    float g = sun_airlight_ray(frame.medium_sigma_s[c], frame.medium_sigma_t[c], lights[i].color[c], origin, dir,
-                               lights[i].position, b - a);
+    float g = sun_airlight_ray(frame.medium_sigma_s[c], frame.medium_sigma_t[c], LIGHT(i).color[c], origin, dir,
+                               LIGHT(i).position, b - a);
 #endif
     sum[c] = exp(-frame.medium_sigma_t[c] * a) * g;
   }
@@ -36,20 +32,20 @@ vec3 sun_piece(int i, vec3 eye, vec3 dir, float a, float b) {
 vec3 nilsson_piece(int i, vec3 eye, vec3 dir, float a, float b) {
   vec3 sum;
   for (int c = 0; c < 3; ++c)
-    sum[c] = nilsson_airlight(frame.medium_sigma_s[c], lights[i].color[c], frame.light_model_a0, frame.light_model_a1, eye,
-                              dir, lights[i].position, a, b);
+    sum[c] = nilsson_airlight(frame.medium_sigma_s[c], LIGHT(i).color[c], frame.light_model_a0, frame.light_model_a1, eye,
+                              dir, LIGHT(i).position, a, b);
   return sum;
 }
 
 // gamma.cpp biri_angular: ∫ p(cos θ)·cone·exp(-σt(x + r))/r² dx over [t0, t1],
 // Biri's angle φ through s = asinh((x - xs)/h): dx/r² = ds/(h cosh s), cos θ = -tanh s.
 vec3 biri_angular(int i, vec3 eye, vec3 dir, float t0, float t1) {
-  vec3 light = lights[i].position, delta = light - eye;
+  vec3 light = LIGHT(i).position, delta = light - eye;
   float xs = dot(delta, dir);
   vec3 off = delta - xs * dir;
   float h_true = length(off), h = max(h_true, MIN_LIGHT_DISTANCE);
   vec3 normal = h_true > 0.0 ? off / h_true : normalize(cross(dir, vec3(dir.y, dir.z, -dir.x)));
-  bool smooth_edge = lights[i].type == LIGHT_SPOT && lights[i].edge > 0.0;
+  bool smooth_edge = light_types[i] == LIGHT_SPOT && LIGHT(i).edge > 0.0;
   vec3 sigma_t = frame.medium_sigma_t;
   float fast = max(sigma_t.r, max(sigma_t.g, sigma_t.b)), slow = min(sigma_t.r, min(sigma_t.g, sigma_t.b));
   float s0 = stable_asinh((t0 - xs) / h), s1 = stable_asinh((t1 - xs) / h);
@@ -62,9 +58,9 @@ vec3 biri_angular(int i, vec3 eye, vec3 dir, float t0, float t1) {
     for (int k = 0; k < 8; ++k) {
       float s = 0.5 * (a + b) + 0.5 * (b - a) * (k < 4 ? -BIRI_GL_X[k] : BIRI_GL_X[k - 4]);
       float w = 0.5 * (b - a) * BIRI_GL_W[k % 4];
-      float f = phase_sum(0, frame.medium_lobes, -tanh(s));
+      float f = medium_phase(-tanh(s));
       if (smooth_edge)
-        f *= spot_cone(lights[i].direction, lights[i].cone, lights[i].edge,
+        f *= spot_cone(LIGHT(i).direction, LIGHT(i).cone, LIGHT(i).edge,
                        normalize(tanh(s) * dir - normal / cosh(s)));
       sum += w * f / cosh(s) * exp(-sigma_t * (e0 * expm1_nonneg(s - s0)));
     }
@@ -78,18 +74,18 @@ vec3 biri_angular(int i, vec3 eye, vec3 dir, float t0, float t1) {
 vec3 local_piece(int i, vec3 eye, vec3 dir, float a, float b) {
   if (!(b > a)) return vec3(0.0);
   if (simplified_model()) return nilsson_piece(i, eye, dir, a, b);
-  bool smooth_edge = lights[i].type == LIGHT_SPOT && lights[i].edge > 0.0;
+  bool smooth_edge = light_types[i] == LIGHT_SPOT && LIGHT(i).edge > 0.0;
   if (isotropic_medium() && !smooth_edge) return sun_piece(i, eye, dir, a, b);
-  return frame.medium_sigma_s * lights[i].color * biri_angular(i, eye, dir, a, b);
+  return frame.medium_sigma_s * LIGHT(i).color * biri_angular(i, eye, dir, a, b);
 }
 
 // A spot: its cone_intervals (hard cut at the cone), each cut again at the
 // inner cone's ends under a smooth edge (gamma.cpp spot_gamma): those pieces
 // lie inside the outer one, in ascending order.
 vec3 spot_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
-  vec3 apex = lights[i].position, axis = lights[i].direction;
-  float cone = lights[i].cone, inner = cone - lights[i].edge;
-  bool cut = lights[i].edge > 0.0 && inner > 0.0 && !simplified_model();
+  vec3 apex = LIGHT(i).position, axis = LIGHT(i).direction;
+  float cone = LIGHT(i).cone, inner = cone - LIGHT(i).edge;
+  bool cut = LIGHT(i).edge > 0.0 && inner > 0.0 && !simplified_model();
   ConeIntervals lit = cone_intervals(apex, axis, cone, eye, dir, t0, t1);
   vec3 sum = vec3(0.0);
   for (int k = 0; k < lit.count; ++k) {
@@ -107,9 +103,9 @@ vec3 spot_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
 
 // gamma.cpp directional: the exact exponential form, over the beam's box if any.
 vec3 directional_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
-  vec3 travel = lights[i].direction;
+  vec3 travel = LIGHT(i).direction;
   bool simplified = simplified_model();
-  float p = simplified ? INV_4PI : phase_sum(0, frame.medium_lobes, dot(-travel, dir));
+  float p = simplified ? INV_4PI : medium_phase(dot(-travel, dir));
   float along = 0.0, s_start = 0.0;
   if (has_beam(i)) {
     Beam beam = light_beam(i);
@@ -121,14 +117,14 @@ vec3 directional_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
     s_start = max(beam_depth(beam, eye + t0 * dir), 0.0);
   }
   vec3 sigma_t = simplified ? vec3(0.0) : frame.medium_sigma_t;
-  return frame.medium_sigma_s * p * lights[i].color * exp(-sigma_t * (t0 + s_start)) *
+  return frame.medium_sigma_s * p * LIGHT(i).color * exp(-sigma_t * (t0 + s_start)) *
          exponential_length(sigma_t * (1.0 + along), t1 - t0);
 }
 
 // Γ of light i along eye + t·dir (unit dir) over [t0, t1]: the entry point of
 // the `analytic` method.
 vec3 closed_form_airlight(int i, vec3 eye, vec3 dir, float t0, float t1) {
-  if (lights[i].type == LIGHT_DIRECTIONAL) return directional_gamma(i, eye, dir, t0, t1);
-  if (lights[i].type == LIGHT_POINT) return local_piece(i, eye, dir, t0, t1);
+  if (light_types[i] == LIGHT_DIRECTIONAL) return directional_gamma(i, eye, dir, t0, t1);
+  if (light_types[i] == LIGHT_POINT) return local_piece(i, eye, dir, t0, t1);
   return spot_gamma(i, eye, dir, t0, t1);
 }

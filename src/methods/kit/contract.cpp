@@ -15,7 +15,7 @@
 namespace airlight {
 
 FrameInputs frame_inputs(const Scene& scene, int width, int height) {
-  return {scene.camera, width, height, scene.lights, scene.medium, scene.light_model, {}};
+  return {scene.camera, width, height, scene.lights, scene.medium, scene.light_model, {}, true};
 }
 
 namespace {
@@ -80,8 +80,10 @@ void Method::render_frame(const FrameInputs&, const EngineFrame&) {
   throw Failure("this method runs on the CPU: it cannot render into an engine's GL textures");
 }
 
-FrameImages render(Method& method, const Scene& scene, int width, int height) {
-  method.render_frame(frame_inputs(scene, width, height));
+FrameImages render(Method& method, const Scene& scene, int width, int height, bool surface) {
+  FrameInputs inputs = frame_inputs(scene, width, height);
+  inputs.surface = surface;
+  method.render_frame(inputs);
   return method.read_back();
 }
 

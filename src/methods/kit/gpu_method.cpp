@@ -87,7 +87,7 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
   if (engine) check_engine(*engine, inputs);
   gpu::SavedState state;
   PassTimer timer;
-  frame_.render(inputs, frame_settings_, engine, !engine, timer);
+  frame_.render(inputs, frame_settings_, engine, {uses_shadow_maps(), inputs.surface && !engine}, timer);
   if (inputs.width != width_ || inputs.height != height_) {
     airlight_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, inputs.width, inputs.height);
     width_ = inputs.width;
@@ -107,7 +107,7 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
 // (engine_composite.frag.glsl): the engine's colour is only blended into.
 void GpuMethod::write_engine_target(const EngineTarget& target, PassTimer& timer) {
   gpu::ScopedPass pass(timer, "engine");
-  const std::string defines = frame_defines();
+  const std::string defines = frame_.defines();
   for (const auto& [texture, what, transmittance] :
        {std::tuple{target.airlight, "airlight", false}, std::tuple{target.transmittance, "transmittance", true}}) {
     if (!texture) continue;

@@ -43,6 +43,8 @@ protected:
   // buffers and textures are bound (SceneFrame::bind) when it is called;
   // frame.inputs() is this frame's camera, lights and medium.
   virtual void render_airlight(const SceneFrame& frame, const Texture& target, PassTimer& timer) = 0;
+  // Whether the method reads the lights' shadow maps: without, the frame draws none.
+  virtual bool uses_shadow_maps() const { return true; }
   // Method-specific counters for FrameImages::stats.
   virtual std::vector<std::pair<std::string, double>> stats() const { return {}; }
 

@@ -69,14 +69,14 @@ vec2 segment_sample(Segment s, float u, int n) {
 const int ALL_LIGHTS = -1;      // `group` of march_segment: every light,
 const int UNBOUNDED_SUNS = -2;  // the directional lights without a beam, or one light (>= 0)
 
-bool unbounded_sun(int i) { return lights[i].type == LIGHT_DIRECTIONAL && !has_beam(i); }
+bool unbounded_sun(int i) { return light_types[i] == LIGHT_DIRECTIONAL && !has_beam(i); }
 
 bool in_group(int i, int group) {
   return group == ALL_LIGHTS || (group == UNBOUNDED_SUNS ? unbounded_sun(i) : i == group);
 }
 
 bool any_unbounded_sun() {
-  for (int i = 0; i < light_count(); ++i)
+  for (int i = 0; i < LIGHT_COUNT; ++i)
     if (unbounded_sun(i)) return true;
   return false;
 }
@@ -86,7 +86,7 @@ bool any_unbounded_sun() {
 vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) {
   if (!(s.b > s.a)) return vec3(0.0);
   int lo = group >= 0 ? group : 0;
-  int hi = group >= 0 ? group + 1 : light_count();
+  int hi = group >= 0 ? group + 1 : LIGHT_COUNT;
   vec3 eye = frame.eye;
   vec3 sum = vec3(0.0);
   for (int k = r.first; k < r.end; k += r.stride) {
@@ -113,12 +113,12 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset, int sampling
   vec3 sum = vec3(0.0);
   if (any_unbounded_sun()) sum += march_segment(dir, uniform_segment(0.0, d), r, offset, UNBOUNDED_SUNS);
   vec3 eye = frame.eye;
-  for (int i = 0; i < light_count(); ++i) {
+  for (int i = 0; i < LIGHT_COUNT; ++i) {
     if (unbounded_sun(i)) continue;
     vec2 lit = lit_interval(i, eye, dir, 0.0, d);
     if (!(lit.y > lit.x)) continue;
     Segment s = has_beam(i) ? uniform_segment(lit.x, lit.y)
-                            : equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position);
+                            : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
     sum += march_segment(dir, s, r, offset, i);
   }
   return sum;
@@ -134,15 +134,15 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset, int sampling
 vec3 light_guide(vec3 dir, float d) {
   vec3 eye = frame.eye;
   vec3 guide = vec3(0.0);
-  for (int i = 0; i < light_count(); ++i) {
+  for (int i = 0; i < LIGHT_COUNT; ++i) {
     vec2 lit = lit_interval(i, eye, dir, 0.0, d);
     if (!(lit.y > lit.x)) continue;
-    if (lights[i].type == LIGHT_DIRECTIONAL) {
-      guide += lights[i].color * (lit.y - lit.x);
+    if (light_types[i] == LIGHT_DIRECTIONAL) {
+      guide += LIGHT(i).color * (lit.y - lit.x);
       continue;
     }
-    Segment s = equiangular_segment(lit.x, lit.y, eye, dir, lights[i].position);
-    guide += lights[i].color * ((s.theta_b - s.theta_a) / s.h);
+    Segment s = equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
+    guide += LIGHT(i).color * ((s.theta_b - s.theta_a) / s.h);
   }
   return guide;
 }

@@ -54,7 +54,7 @@ void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   const int stride = settings_.block * settings_.block;
   const int own_samples = (settings_.steps + stride - 1) / stride;  // of pixel q = 0, the most
   const gpu::Program& program = gpu::cached_compute_program(
-      "methods/kit/march.comp.glsl", frame_defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n");
+      "methods/kit/march.comp.glsl", frame.defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n");
   glUseProgram(program.id());
   gpu::set_uniform(program, "steps", settings_.steps);
   gpu::set_uniform(program, "block", settings_.block);

@@ -1,9 +1,18 @@
-// The shared frame as every GPU method sees it (src/gpu/frame.hpp): the frame
-// block, the scene's lights, volumes and phase lobes, the G-buffer and shadow
-// maps, and the scene-level helpers built on the optics twins — the GLSL side of
-// optics::arrival, light_leg_depth, eye_leg_depth, scattering and inscatter
-// (src/optics/), so that GPU passes match src/reference/reference.cpp.
-// Binding points come as BINDING_* macros from kit::frame_defines().
+// The shared frame as every GPU method sees it (methods/kit/scene_frame.hpp):
+// the frame block, the scene's lights, volumes and phase lobes, the G-buffer
+// and shadow maps, and the scene-level helpers built on the optics twins — the
+// GLSL side of optics::arrival, light_leg_depth, eye_leg_depth, scattering and
+// inscatter (src/optics/), so that GPU passes match src/reference/reference.cpp.
+//
+// Specialized to the scene: binding points and the scene's structure come as
+// macros from kit::SceneFrame::defines() — LIGHT_COUNT, LIGHT_TYPES,
+// LIGHT_SHADOWS, LIGHT_GOBOS, LIGHT_BEAMS, VOLUME_COUNT, LIGHT_MODEL_TYPE,
+// GREY_MEDIA, MEDIUM_PHASE(c), VOLUME_PHASE(v, c), FOR_EACH_LIGHT(F) … — so
+// that with a constant light index every test of a light's kind folds away:
+// a generic shader pays for every branch it holds (docs/design.md §2).
+// A program that defines SCENE_IN_REGISTERS before including this file and
+// calls load_scene() first reads each light, volume and lobe from its buffer
+// once per invocation instead of at every use.
 #include "methods/kit/frame_data.glsl"
 #include "optics/phase.glsl"
 #include "optics/light.glsl"
@@ -32,9 +41,30 @@ layout(binding = BINDING_GOBOS) uniform sampler2DArray gobo_maps;
 layout(binding = BINDING_SHADOW_MAPS) uniform sampler2DArray shadow_maps;
 layout(binding = BINDING_SHADOW_CUBES) uniform samplerCubeArray shadow_cubes;
 
-int light_count() { return frame.light_count; }
-int volume_count() { return frame.volume_count; }
-bool simplified_model() { return frame.light_model == LIGHT_MODEL_SIMPLIFIED; }
+const int light_types[] = LIGHT_TYPES;      // LIGHT_* per light
+const int light_shadows[] = LIGHT_SHADOWS;  // SHADOW_* per light
+const bool light_gobos[] = LIGHT_GOBOS;     // whether a light samples a gobo
+const bool light_beams[] = LIGHT_BEAMS;     // a directional light bounded to its beam
+
+#ifdef SCENE_IN_REGISTERS
+SceneLight scene_lights[LIGHT_COUNT > 0 ? LIGHT_COUNT : 1];
+SceneVolume scene_volumes[VOLUME_COUNT > 0 ? VOLUME_COUNT : 1];
+SceneLobe scene_lobes[LOBE_COUNT > 0 ? LOBE_COUNT : 1];
+#define LOAD_LIGHT(i) scene_lights[i] = lights[i];
+#define LOAD_VOLUME(v) scene_volumes[v] = volumes[v];
+#define LOAD_LOBE(k) scene_lobes[k] = lobes[k];
+void load_scene() { FOR_EACH_LIGHT(LOAD_LIGHT) FOR_EACH_VOLUME(LOAD_VOLUME) FOR_EACH_LOBE(LOAD_LOBE) }
+#define LIGHT(i) scene_lights[i]
+#define VOLUME(v) scene_volumes[v]
+#define LOBE(k) scene_lobes[k]
+#else
+void load_scene() {}
+#define LIGHT(i) lights[i]
+#define VOLUME(v) volumes[v]
+#define LOBE(k) lobes[k]
+#endif
+
+bool simplified_model() { return LIGHT_MODEL_TYPE == LIGHT_MODEL_SIMPLIFIED; }
 ivec2 frame_size() { return ivec2(frame.size); }
 
 // ---- camera (docs/design.md §5, geometry::primary_ray) ------------------------------
@@ -59,28 +89,27 @@ float surface_distance(ivec2 pixel) { return texelFetch(gbuffer_distance, pixel,
 
 // ---- media (optics/media.hpp) -------------------------------------------------
 
-float phase_sum(int first, int count, float cos_theta) {
-  float sum = 0.0;
-  for (int k = first; k < first + count; ++k) sum += lobes[k].weight * phase_lobe(lobes[k].type, lobes[k].g, cos_theta);
-  return sum;
-}
+// The medium's phase function at cos θ: its lobes, each of a constant type.
+float medium_phase(float c) { return MEDIUM_PHASE(c); }
 
 // optics::scattering: Σ over media containing x of σs·p(cos θ); σs/4π under the
 // simplified model (Nilsson eq. 2.14).
-vec3 scattering(vec3 x, float cos_theta) {
+vec3 scattering(vec3 x, float c) {
   if (simplified_model()) return frame.medium_sigma_s * INV_4PI;
-  vec3 sum = frame.medium_sigma_s * phase_sum(0, frame.medium_lobes, cos_theta);
-  for (int v = 0; v < volume_count(); ++v)
-    if (box_contains(x, volumes[v].lo, volumes[v].hi))
-      sum += volumes[v].sigma_s * phase_sum(volumes[v].first_lobe, volumes[v].lobe_count, cos_theta);
+  vec3 sum = frame.medium_sigma_s * medium_phase(c);
+#define ADD_VOLUME_SCATTERING(v) \
+  if (box_contains(x, VOLUME(v).lo, VOLUME(v).hi)) sum += VOLUME(v).sigma_s * VOLUME_PHASE(v, c);
+  FOR_EACH_VOLUME(ADD_VOLUME_SCATTERING)
+#undef ADD_VOLUME_SCATTERING
   return sum;
 }
 
 // optics::optical_depth: ∫σt along the segment a → b, medium and volumes.
 vec3 optical_depth(vec3 a, vec3 b) {
   vec3 depth = frame.medium_sigma_t * length(b - a);
-  for (int v = 0; v < volume_count(); ++v)
-    depth += volumes[v].sigma_t * box_chord(a, b, volumes[v].lo, volumes[v].hi);
+#define ADD_VOLUME_CHORD(v) depth += VOLUME(v).sigma_t * box_chord(a, b, VOLUME(v).lo, VOLUME(v).hi);
+  FOR_EACH_VOLUME(ADD_VOLUME_CHORD)
+#undef ADD_VOLUME_CHORD
   return depth;
 }
 
@@ -88,10 +117,10 @@ vec3 optical_depth(vec3 a, vec3 b) {
 vec3 eye_leg_depth(vec3 a, vec3 b) { return simplified_model() ? vec3(0.0) : optical_depth(a, b); }
 
 // A directional light with a beam (beam_length > 0), and the beam.
-bool has_beam(int i) { return lights[i].type == LIGHT_DIRECTIONAL && lights[i].beam_length > 0.0; }
+bool has_beam(int i) { return light_beams[i]; }
 Beam light_beam(int i) {
-  return Beam(lights[i].position, lights[i].direction, lights[i].gobo_right, lights[i].gobo_up,
-              vec2(lights[i].beam_width, lights[i].beam_height), lights[i].beam_length);
+  return Beam(LIGHT(i).position, LIGHT(i).direction, LIGHT(i).gobo_right, LIGHT(i).gobo_up,
+              vec2(LIGHT(i).beam_width, LIGHT(i).beam_height), LIGHT(i).beam_length);
 }
 
 // optics::light_leg_depth: to the light's position; a beam, emitted at its
@@ -99,11 +128,12 @@ Beam light_beam(int i) {
 // lights only through bounded volumes (docs/design.md §1).
 vec3 light_leg_depth(int i, vec3 x) {
   if (simplified_model()) return vec3(0.0);
-  if (lights[i].type != LIGHT_DIRECTIONAL) return optical_depth(x, lights[i].position);
-  if (has_beam(i)) return optical_depth(x, x - max(beam_depth(light_beam(i), x), 0.0) * lights[i].direction);
+  if (light_types[i] != LIGHT_DIRECTIONAL) return optical_depth(x, LIGHT(i).position);
+  if (has_beam(i)) return optical_depth(x, x - max(beam_depth(light_beam(i), x), 0.0) * LIGHT(i).direction);
   vec3 depth = vec3(0.0);
-  for (int v = 0; v < volume_count(); ++v)
-    depth += volumes[v].sigma_t * box_ray_chord(x, -lights[i].direction, volumes[v].lo, volumes[v].hi);
+#define ADD_VOLUME_RAY_CHORD(v) depth += VOLUME(v).sigma_t * box_ray_chord(x, -LIGHT(i).direction, VOLUME(v).lo, VOLUME(v).hi);
+  FOR_EACH_VOLUME(ADD_VOLUME_RAY_CHORD)
+#undef ADD_VOLUME_RAY_CHORD
   return depth;
 }
 
@@ -121,21 +151,20 @@ struct Arrival {
 
 // The gobo colour of light i at uv (1 without a gobo; black outside [0, 1]²).
 vec3 gobo_colour(int i, vec2 uv) {
-  int gobo = lights[i].gobo_layer;
-  return gobo < 0 ? vec3(1.0) : sample_gobo(gobo_maps, float(gobo), uv);
+  return light_gobos[i] ? sample_gobo(gobo_maps, float(LIGHT(i).gobo_layer), uv) : vec3(1.0);
 }
 
 // optics::light_map: the unitless per-channel factor of what light i sends to
 // x: spot → spot_cone · gobo colour toward x; directional with a beam → (x
 // inside the beam) · gobo colour at beam_uv(x); point and unbounded directional → 1.
 vec3 light_map(int i, vec3 x) {
-  if (lights[i].type == LIGHT_SPOT) {
-    vec3 axis = lights[i].direction, delta = x - lights[i].position;
+  if (light_types[i] == LIGHT_SPOT) {
+    vec3 axis = LIGHT(i).direction, delta = x - LIGHT(i).position;
     float r = length(delta);
     vec3 dir = r > 0.0 ? delta / r : axis;  // at the apex: the axis, as light_arrival_unmapped
-    float cone = spot_cone(axis, lights[i].cone, lights[i].edge, dir);
+    float cone = spot_cone(axis, LIGHT(i).cone, LIGHT(i).edge, dir);
     if (cone == 0.0) return vec3(0.0);
-    vec2 uv = gobo_uv(axis, lights[i].gobo_right, lights[i].gobo_up, lights[i].tan_cone, dir);
+    vec2 uv = gobo_uv(axis, LIGHT(i).gobo_right, LIGHT(i).gobo_up, LIGHT(i).tan_cone, dir);
     return cone * gobo_colour(i, uv);
   }
   if (!has_beam(i)) return vec3(1.0);
@@ -146,13 +175,13 @@ vec3 light_map(int i, vec3 x) {
 // optics::arrival without the light map: intensity/falloff toward x (point,
 // spot), or the irradiance (directional).
 Arrival light_arrival_unmapped(int i, vec3 x) {
-  if (lights[i].type == LIGHT_DIRECTIONAL)
-    return Arrival(lights[i].color, -lights[i].direction, positive_infinity());
-  vec3 delta = lights[i].position - x;
+  if (light_types[i] == LIGHT_DIRECTIONAL)
+    return Arrival(LIGHT(i).color, -LIGHT(i).direction, positive_infinity());
+  vec3 delta = LIGHT(i).position - x;
   float r = length(delta);
-  vec3 to_light = r > 0.0 ? delta / r : -lights[i].direction;
+  vec3 to_light = r > 0.0 ? delta / r : -LIGHT(i).direction;
   vec3 irradiance =
-      arrival_irradiance(lights[i].color, frame.light_model, r, frame.light_model_a1, frame.light_model_a0);
+      arrival_irradiance(LIGHT(i).color, LIGHT_MODEL_TYPE, r, frame.light_model_a1, frame.light_model_a0);
   return Arrival(irradiance, to_light, r);
 }
 
@@ -170,8 +199,8 @@ Arrival light_arrival(int i, vec3 x) {
 // beam its box (beam_interval); else all of it. Empty: !(x < y).
 vec2 lit_interval(int i, vec3 eye, vec3 dir, float t0, float t1) {
   if (has_beam(i)) return beam_interval(light_beam(i), eye, dir, t0, t1);
-  if (lights[i].type != LIGHT_SPOT) return vec2(t0, t1);
-  ConeIntervals lit = cone_intervals(lights[i].position, lights[i].direction, lights[i].cone,
+  if (light_types[i] != LIGHT_SPOT) return vec2(t0, t1);
+  ConeIntervals lit = cone_intervals(LIGHT(i).position, LIGHT(i).direction, LIGHT(i).cone,
                                      eye, dir, t0, t1);
   return lit.count > 0 ? vec2(lit.piece[0].x, lit.piece[lit.count - 1].y) : vec2(t1, t0);
 }
@@ -181,25 +210,25 @@ vec2 lit_interval(int i, vec3 eye, vec3 dir, float t0, float t1) {
 // What a shadow map stores (R32F, linear): the distance from a point light or
 // spot to x, or x's depth along a directional light's travel.
 float shadow_distance(int i, vec3 x) {
-  if (lights[i].type == LIGHT_DIRECTIONAL) return dot(x, lights[i].direction);
-  return length(x - lights[i].position);
+  if (light_types[i] == LIGHT_DIRECTIONAL) return dot(x, LIGHT(i).direction);
+  return length(x - LIGHT(i).position);
 }
 
 // World size of one shadow-map texel at x (at the map's centre, where texels are largest).
 float shadow_texel(int i, vec3 x) {
-  float along = lights[i].type == LIGHT_DIRECTIONAL ? 0.0 : length(x - lights[i].position);
-  return (lights[i].texel_per_distance * along + lights[i].texel_constant) / frame.shadow_resolution;
+  float along = light_types[i] == LIGHT_DIRECTIONAL ? 0.0 : length(x - LIGHT(i).position);
+  return (LIGHT(i).texel_per_distance * along + LIGHT(i).texel_constant) / frame.shadow_resolution;
 }
 
 // The stored distance of the nearest occluder toward x; +∞ where x lies outside
 // the map (nothing in the scene's bounds can occlude it there).
 float shadow_occluder(int i, vec3 x) {
-  float layer = float(lights[i].shadow_layer);
-  if (lights[i].shadow_kind == SHADOW_CUBE) {
-    vec3 dir = x - lights[i].position;
+  float layer = float(LIGHT(i).shadow_layer);
+  if (light_shadows[i] == SHADOW_CUBE) {
+    vec3 dir = x - LIGHT(i).position;
     return dir == vec3(0.0) ? positive_infinity() : texture(shadow_cubes, vec4(dir, layer)).r;
   }
-  vec4 clip = lights[i].shadow_matrix * vec4(x, 1.0);
+  vec4 clip = LIGHT(i).shadow_matrix * vec4(x, 1.0);
   if (!(clip.w > 0.0)) return positive_infinity();  // behind a spot
   vec2 ndc = clip.xy / clip.w;
   if (any(greaterThan(abs(ndc), vec2(1.0)))) return positive_infinity();
@@ -209,7 +238,7 @@ float shadow_occluder(int i, vec3 x) {
 // V(x) from light i's shadow map, x lit when its distance minus `bias` does not
 // exceed the stored one.
 float shadow_test(int i, vec3 x, float bias) {
-  if (lights[i].shadow_kind == SHADOW_NONE) return 1.0;
+  if (light_shadows[i] == SHADOW_NONE) return 1.0;
   return shadow_distance(i, x) - bias <= shadow_occluder(i, x) ? 1.0 : 0.0;
 }
 
@@ -238,7 +267,12 @@ float surface_visibility(int i, vec3 x, vec3 n) {
 vec3 inscatter_unmapped(int i, vec3 x, vec3 view_dir, vec3 eye_depth) {
   Arrival a = light_arrival_unmapped(i, x);
   float cos_theta = dot(a.to_light, view_dir);  // light's travel vs. toward the eye
-  return scattering(x, cos_theta) * a.irradiance * exp(-(light_leg_depth(i, x) + eye_depth));
+  vec3 depth = light_leg_depth(i, x) + eye_depth;
+#if GREY_MEDIA
+  return scattering(x, cos_theta) * a.irradiance * exp(-depth.r);  // one exp: σ is the same in R, G and B
+#else
+  return scattering(x, cos_theta) * a.irradiance * exp(-depth);
+#endif
 }
 
 // optics::inscatter: light_map × inscatter_unmapped. Outside a cone or a beam

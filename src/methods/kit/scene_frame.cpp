@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <numbers>
+#include <type_traits>
 
 namespace airlight::kit {
 
@@ -250,8 +251,79 @@ Buffer storage(const std::vector<T>& data) {
   return make_buffer(std::max<size_t>(data.size(), 1) * sizeof(T), data.empty() ? nullptr : data.data());
 }
 
-const Program& frame_program(const char* vertex, const char* fragment) {
-  return cached_program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, frame_defines());
+const Program& frame_program(const char* vertex, const char* fragment, const std::string& defines) {
+  return cached_program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines);
+}
+
+// ---- the scene's structure as GLSL constants (SceneFrame::defines) ------------
+
+template <typename T>
+std::string glsl_array(const char* type, const std::vector<T>& values) {
+  std::string text = std::string(type) + "[](";
+  if (values.empty()) text += std::is_same_v<T, bool> ? "false" : "0";  // GLSL has no empty arrays
+  for (size_t k = 0; k < values.size(); ++k) {
+    if (k) text += ", ";
+    if constexpr (std::is_same_v<T, bool>)
+      text += values[k] ? "true" : "false";
+    else
+      text += std::to_string(values[k]);
+  }
+  return text + ")";
+}
+
+// FOR_EACH_<WHAT>(F) expands to F(0) F(1) … F(n − 1): loops over lights and
+// volumes unrolled by the preprocessor, so that every index is a constant.
+std::string for_each(const char* what, size_t n) {
+  std::string text = std::string("#define FOR_EACH_") + what + "(F)";
+  for (size_t k = 0; k < n; ++k) text += " F(" + std::to_string(k) + ")";
+  return text + "\n";
+}
+
+// Σ_k weight_k · phase_lobe(type_k, g_k, c) over lobes [first, first + count),
+// each type a constant: the phase function a medium has, and nothing else.
+std::string phase_expression(const std::vector<SceneLobe>& lobes, int first, int count) {
+  std::string text = "(0.0";
+  for (int k = first; k < first + count; ++k)
+    text += " + LOBE(" + std::to_string(k) + ").weight * phase_lobe(" + std::to_string(lobes[k].type) + ", LOBE(" +
+            std::to_string(k) + ").g, c)";
+  return text + ")";
+}
+
+bool grey(const glm::vec3& c) { return c.r == c.g && c.g == c.b; }
+
+std::string structure_defines(const std::vector<SceneLight>& lights, const std::vector<SceneVolume>& volumes,
+                              const std::vector<SceneLobe>& lobes, int medium_lobes, const FrameInputs& in) {
+  std::vector<int> types, shadows;
+  std::vector<bool> gobos, beams;
+  for (const SceneLight& l : lights) {
+    types.push_back(l.type);
+    shadows.push_back(l.shadow_kind);
+    gobos.push_back(l.gobo_layer >= 0);
+    beams.push_back(l.beam_length > 0.0f);
+  }
+  bool grey_media = grey(in.medium.sigma_s) && grey(in.medium.sigma_t());
+  for (const SceneVolume& v : volumes) grey_media = grey_media && grey(v.sigma_s) && grey(v.sigma_t);
+  std::string d;
+  d += "#define LIGHT_COUNT " + std::to_string(lights.size()) + "\n";
+  d += "#define VOLUME_COUNT " + std::to_string(volumes.size()) + "\n";
+  d += "#define LOBE_COUNT " + std::to_string(lobes.size()) + "\n";
+  d += "#define LIGHT_MODEL_TYPE " + std::to_string(static_cast<int>(in.light_model.type)) + "\n";
+  d += std::string("#define GREY_MEDIA ") + (grey_media ? "1" : "0") + "\n";
+  d += "#define LIGHT_TYPES " + glsl_array("int", types) + "\n";
+  d += "#define LIGHT_SHADOWS " + glsl_array("int", shadows) + "\n";
+  d += "#define LIGHT_GOBOS " + glsl_array("bool", gobos) + "\n";
+  d += "#define LIGHT_BEAMS " + glsl_array("bool", beams) + "\n";
+  d += for_each("LIGHT", lights.size()) + for_each("VOLUME", volumes.size()) + for_each("LOBE", lobes.size());
+  d += "#define MEDIUM_PHASE(c) " + phase_expression(lobes, 0, medium_lobes) + "\n";
+  bool isotropic = true;
+  for (int k = 0; k < medium_lobes; ++k) isotropic = isotropic && lobes[k].type == static_cast<int>(PhaseType::isotropic);
+  d += std::string("#define MEDIUM_ISOTROPIC ") + (isotropic ? "1" : "0") + "\n";
+  std::string volume_phase = "0.0";  // VOLUME_PHASE(v, c): a chain of constant conditions that folds
+  for (size_t v = volumes.size(); v-- > 0;)
+    volume_phase = "((v) == " + std::to_string(v) + " ? " +
+                   phase_expression(lobes, volumes[v].first_lobe, volumes[v].lobe_count) + " : " + volume_phase + ")";
+  d += "#define VOLUME_PHASE(v, c) " + volume_phase + "\n";
+  return d;
 }
 
 // ---- checks of a frame's inputs against the prepared scene (before any GL work) ----
@@ -266,7 +338,7 @@ void check_gobos(const FrameInputs& in, const std::vector<const Image*>& gobos) 
 
 }  // namespace
 
-std::string frame_defines() {
+std::string binding_defines() {
   using namespace binding;
   const std::pair<const char*, GLuint> all[] = {
       {"FRAME_BLOCK", frame_block},   {"LIGHTS", lights},
@@ -360,20 +432,22 @@ void SceneFrame::upload_gobos(const Scene& scene) {
 
 // ---- a frame's inputs -----------------------------------------------------------
 
-void SceneFrame::upload_inputs(const FrameSettings& settings, const EngineFrame* engine) {
+void SceneFrame::upload_inputs(const FrameSettings& settings, const EngineFrame* engine, bool shadows) {
   std::vector<ObjectTransform> objects;
   for (size_t m = 0; m < scene_.meshes.size(); ++m) {
     const glm::mat4 model = inputs_.transforms.empty() ? glm::mat4(1.0f) : inputs_.transforms[m];
     objects.push_back({model, glm::transpose(glm::inverse(model))});
   }
   objects_ = storage(objects);
-  upload_medium();
-  upload_lights(engine, settings.shadow_resolution);
+  const Media media = upload_medium();
+  const std::vector<SceneLight> lights = upload_lights(engine, settings.shadow_resolution, shadows);
+  defines_ = binding_defines() + structure_defines(lights, media.volumes, media.lobes,
+                                                   static_cast<int>(inputs_.medium.phase.lobes.size()), inputs_);
   update_frame_block(settings);
 }
 
 // The frame's medium lobes first (lobes[0 .. medium_lobes)), then each volume's.
-void SceneFrame::upload_medium() {
+SceneFrame::Media SceneFrame::upload_medium() {
   std::vector<SceneLobe> lobes;
   auto append = [&](const Phase& phase) {
     const int first = static_cast<int>(lobes.size());
@@ -388,11 +462,13 @@ void SceneFrame::upload_medium() {
   }
   lobes_ = storage(lobes);
   volumes_ = storage(volumes);
+  return {std::move(lobes), std::move(volumes)};
 }
 
 // Light records with their shadow-map kind, slot and projection: airlight's
-// own, or those of the engine's map, converted into airlight's layer.
-void SceneFrame::upload_lights(const EngineFrame* engine, int resolution) {
+// own, or those of the engine's map, converted into airlight's layer; none
+// at all when the frame's method reads no shadow map.
+std::vector<SceneLight> SceneFrame::upload_lights(const EngineFrame* engine, int resolution, bool shadows) {
   const Bounds bounds = world_bounds(mesh_bounds_, inputs_.transforms);
   std::vector<SceneLight> records;
   shadow_draws_.clear();
@@ -404,7 +480,7 @@ void SceneFrame::upload_lights(const EngineFrame* engine, int resolution) {
                                                                                               : nullptr;
     const auto gobo = std::find(gobo_images_.begin(), gobo_images_.end(), light.gobo.get());
     SceneLight g = light_record(light, has_gobo(light) ? static_cast<int>(gobo - gobo_images_.begin()) : -1);
-    g.shadow_kind = shadow_kind(light, bounds, theirs);
+    g.shadow_kind = shadows ? shadow_kind(light, bounds, theirs) : shadow_none;
     if (g.shadow_kind == shadow_cube) {
       g.shadow_layer = layout.cubes++;
       g.texel_per_distance = 2.0f;  // a 90° face: 2 units across at unit distance
@@ -424,18 +500,19 @@ void SceneFrame::upload_lights(const EngineFrame* engine, int resolution) {
   }
   lights_ = storage(records);
   if (!(layout == shadow_layout_) || resolution != shadow_resolution_) allocate_shadow_maps(layout, resolution);
+  return records;
 }
 
 // ---- render ---------------------------------------------------------------------
 
 void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine,
-                        bool surface, PassTimer& timer) {
+                        Needs needs, PassTimer& timer) {
   check_frame_inputs(scene_, inputs);
   check_gobos(inputs, gobo_images_);
   geometry::camera_basis(inputs.camera);  // throws for a degenerate camera
   resize(inputs.width, inputs.height);
   inputs_ = inputs;
-  upload_inputs(settings, engine);
+  upload_inputs(settings, engine, needs.shadows);
   bind();
   {
     ScopedPass pass(timer, engine && engine->depth ? "depth" : "gbuffer");
@@ -444,11 +521,11 @@ void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings
     else
       draw_gbuffer();
   }
-  {
+  if (needs.shadows) {
     ScopedPass pass(timer, "shadow");
     draw_shadow_maps();
   }
-  if (surface) {
+  if (needs.surface) {
     ScopedPass pass(timer, "surface");
     shade_surfaces();
   } else {
@@ -551,11 +628,11 @@ void SceneFrame::draw_gbuffer() {
   glClearNamedFramebufferfv(gbuffer_fbo_.id(), GL_DEPTH, 0, &one);
   glBindVertexArray(vertex_array_.id());
   glDisable(GL_DEPTH_TEST);  // the far-plane background first, then the meshes over it
-  glUseProgram(frame_program("methods/kit/fullscreen.vert.glsl", "methods/kit/background.frag.glsl").id());
+  glUseProgram(frame_program("methods/kit/fullscreen.vert.glsl", "methods/kit/background.frag.glsl", defines_).id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glUseProgram(frame_program("methods/kit/gbuffer.vert.glsl", "methods/kit/gbuffer.frag.glsl").id());
+  glUseProgram(frame_program("methods/kit/gbuffer.vert.glsl", "methods/kit/gbuffer.frag.glsl", defines_).id());
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -567,7 +644,7 @@ void SceneFrame::draw_gbuffer() {
 void SceneFrame::import_depth(const EngineDepth& depth) {
   for (GLuint unit : {binding::distance, binding::normal, binding::geometric_normal, binding::albedo})
     glBindTextureUnit(unit, 0);
-  const Program& program = frame_program("methods/kit/fullscreen.vert.glsl", "methods/kit/depth.frag.glsl");
+  const Program& program = frame_program("methods/kit/fullscreen.vert.glsl", "methods/kit/depth.frag.glsl", defines_);
   const glm::mat4 view_projection = depth.projection * depth.view;
   set_uniform(program, "engine_inverse_view_projection", glm::inverse(view_projection));
   set_uniform(program, "engine_zero_to_one", depth.range == DepthRange::zero_to_one ? 1 : 0);
@@ -612,7 +689,7 @@ void SceneFrame::draw_shadow_layer(const ShadowDraw& d) {
   const float far[4] = {FLT_MAX, 0.0f, 0.0f, 0.0f}, one = 1.0f;
   glClearNamedFramebufferfv(shadow_fbo_.id(), GL_COLOR, 0, far);
   glClearNamedFramebufferfv(shadow_fbo_.id(), GL_DEPTH, 0, &one);
-  const Program& program = frame_program("methods/kit/shadow.vert.glsl", "methods/kit/shadow.frag.glsl");
+  const Program& program = frame_program("methods/kit/shadow.vert.glsl", "methods/kit/shadow.frag.glsl", defines_);
   glUseProgram(program.id());
   set_uniform(program, "light_view_projection", d.matrix);
   set_uniform(program, "light_index", d.light);
@@ -631,7 +708,7 @@ void SceneFrame::import_shadow_layer(const ShadowDraw& d) {
   const Program& program =
       cached_program({{GL_VERTEX_SHADER, "methods/kit/fullscreen.vert.glsl"},
                       {GL_FRAGMENT_SHADER, "methods/kit/shadow_import.frag.glsl"}},
-                     frame_defines() + defines);
+                     defines_ + defines);
   glUseProgram(program.id());
   set_uniform(program, "light_index", d.light);
   set_uniform(program, "face", d.layer % 6);
@@ -647,7 +724,7 @@ void SceneFrame::import_shadow_layer(const ShadowDraw& d) {
 }
 
 void SceneFrame::shade_surfaces() {
-  glUseProgram(cached_compute_program("methods/kit/surface.comp.glsl", frame_defines()).id());
+  glUseProgram(cached_compute_program("methods/kit/surface.comp.glsl", defines_).id());
   glBindImageTexture(0, surface_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   dispatch_pixels(inputs_.width, inputs_.height);
 }

@@ -12,6 +12,7 @@
 // GL row y is image row H−1−y; read_image() flips back to top row first.
 #include "gpu/gl.hpp"
 #include "gpu/timer.hpp"
+#include "methods/kit/frame_data.hpp"
 
 #include <airlight/engine.hpp>
 #include <airlight/image.hpp>
@@ -33,7 +34,7 @@ using gpu::Texture;
 using gpu::VertexArray;
 
 // Binding points of the frame's buffers and textures, shared with GLSL through
-// frame_defines() (scene.glsl uses the BINDING_* macros). Methods use image unit
+// SceneFrame::defines() (scene.glsl uses the BINDING_* macros). Methods use image unit
 // 0 for their output and texture units / storage bindings from the first_free_*.
 namespace binding {
 inline constexpr GLuint frame_block = 0;     // uniform block FrameBlock (std140)
@@ -54,8 +55,8 @@ inline constexpr GLuint engine_input = 7;    // an engine's depth or shadow text
 inline constexpr GLuint first_free_texture = 8;
 }  // namespace binding
 
-// "#define BINDING_… n" for every binding point: prepend to a program's defines.
-std::string frame_defines();
+// "#define BINDING_… n" for every binding point.
+std::string binding_defines();
 
 struct FrameSettings {
   int shadow_resolution = 1024;  // texels per side of each shadow map (and cube face)
@@ -76,15 +77,29 @@ public:
   void prepare(const Scene& scene);
 
   // One frame: uploads `inputs`, then the G-buffer ("gbuffer", or "depth" from
-  // the engine's depth buffer), the shadow maps ("shadow": drawn, or converted
-  // from the engine's) and, when `surface`, the surface shading ("surface"),
+  // the engine's depth buffer), the shadow maps if any are needed ("shadow":
+  // drawn, or converted from the engine's) and the surface shading if needed ("surface"),
   // each timed under that name. Throws InputError for inputs that do not fit
   // the prepared scene, before any GL work.
-  void render(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine, bool surface,
+  // What a frame's method reads: shadow maps (none for the analytic method)
+  // and the surface term (none when only L_air is wanted).
+  struct Needs {
+    bool shadows = true, surface = true;
+  };
+  void render(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine, Needs needs,
               PassTimer& timer);
 
   // Binds the frame block, the scene SSBOs and the textures to binding::*.
   void bind() const;
+
+  // What every program that includes scene.glsl is compiled with, for this
+  // frame: the binding points and the scene's structure as constants — light
+  // count and, per light, its type, shadow kind, gobo and beam; volume count;
+  // the phase lobes' types; the light model; whether the media are grey — so
+  // that a program pays only for what the scene has (docs/design.md §2). Data
+  // (positions, colours, σ, g) stays in the buffers: changing it recompiles
+  // nothing; changing the structure compiles each program once more.
+  const std::string& defines() const { return defines_; }
 
   // This frame's inputs and the scene as it was prepared.
   const FrameInputs& inputs() const { return inputs_; }
@@ -115,9 +130,13 @@ private:
   void upload_meshes(const Scene& scene);
   void upload_volumes(const Scene& scene);
   void upload_gobos(const Scene& scene);
-  void upload_inputs(const FrameSettings& settings, const EngineFrame* engine);
-  void upload_medium();
-  void upload_lights(const EngineFrame* engine, int resolution);
+  struct Media {  // what upload_medium put in the buffers
+    std::vector<shader::SceneLobe> lobes;
+    std::vector<shader::SceneVolume> volumes;
+  };
+  void upload_inputs(const FrameSettings& settings, const EngineFrame* engine, bool shadows);
+  Media upload_medium();
+  std::vector<shader::SceneLight> upload_lights(const EngineFrame* engine, int resolution, bool shadows);
   void resize(int width, int height);
   void allocate_shadow_maps(const ShadowLayout& layout, int resolution);
   void update_frame_block(const FrameSettings& settings);
@@ -130,6 +149,7 @@ private:
 
   Scene scene_;  // as prepared, meshes in object space
   FrameInputs inputs_;
+  std::string defines_;
   std::vector<ShadowDraw> shadow_draws_;
   ShadowLayout shadow_layout_;
   std::vector<const Image*> gobo_images_;  // per gobo layer

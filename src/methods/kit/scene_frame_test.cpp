@@ -41,7 +41,7 @@ Rendered render_frame(const Scene& scene, int w = width, int h = height, FrameSe
   SceneFrame frame;
   frame.prepare(scene);
   PassTimer timer;
-  frame.render(frame_inputs(scene, w, h), settings, nullptr, true, timer);
+  frame.render(frame_inputs(scene, w, h), settings, nullptr, {}, timer);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   Rendered r{gpu::read_image(frame.distance(), w, h), gpu::read_image(frame.surface(), w, h), gpu::read_image(frame.albedo(), w, h)};
   const auto times = timer.results();

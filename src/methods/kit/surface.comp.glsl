@@ -26,7 +26,7 @@ vec3 irradiance(int i, SurfacePoint s) {
 // L_surf = albedo·ambient + Σ_lights albedo/π · irradiance.
 vec3 surface_radiance(SurfacePoint s) {
   vec3 e = vec3(0.0);
-  for (int i = 0; i < light_count(); ++i) e += irradiance(i, s);
+  for (int i = 0; i < LIGHT_COUNT; ++i) e += irradiance(i, s);
   return s.albedo * (frame.ambient + e / PI);
 }
 

@@ -104,7 +104,7 @@ void PlanePass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   cos_edge_ = corner_cos(camera_.tan_half_fov_y, double(frame.width()) / frame.height());
   const gpu::Program& program = gpu::cached_program(
       {{GL_VERTEX_SHADER, "methods/planes/planes.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/planes/planes.frag.glsl"}},
-      kit::frame_defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n");
+      frame.defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n");
   glUseProgram(program.id());
   glBindTextureUnit(jitter_unit, noise_.id());
   glBindVertexArray(mesh_.id());

@@ -59,7 +59,7 @@ const int MAX_PIECE_SAMPLES = 64;
 int piece_samples(int i, Piece p, vec3 dir) {
   float n = 1.0;
   if (p.h > 0.0) n = (p.theta.y - p.theta.x) / MAX_SAMPLE_ANGLE;
-  else if (has_beam(i) && lights[i].gobo_layer >= 0) {
+  else if (has_beam(i) && LIGHT(i).gobo_layer >= 0) {
     Beam b = light_beam(i);
     vec2 texels = vec2(textureSize(gobo_maps, 0).xy) / b.size;  // per metre across the beam
     vec2 across = abs(vec2(dot(dir, b.right), dot(dir, b.up))) * (p.t.y - p.t.x);
@@ -96,8 +96,8 @@ void main() {
   vec2 lit = lit_sampling ? lit_interval(light, eye, dir, z0 / cos_axis, z1 / cos_axis) : vec2(z0, z1) / cos_axis;
   if (!(lit.y > lit.x)) discard;
   float offset = jitter ? texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r : 0.5;
-  vec3 light_position = lights[light].position;
-  bool by_angle = lit_sampling && !lattice_xi && lights[light].type != LIGHT_DIRECTIONAL;
+  vec3 light_position = LIGHT(light).position;
+  bool by_angle = lit_sampling && !lattice_xi && light_types[light] != LIGHT_DIRECTIONAL;
   Piece p = by_angle ? angular_piece(light_position, eye, dir, lit) : even_piece(lit);
   int n = lit_sampling ? piece_samples(light, p, dir) : 1;
   vec3 sum = vec3(0.0);

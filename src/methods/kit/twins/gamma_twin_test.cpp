@@ -72,7 +72,7 @@ void check_scene(const std::string& name, const Scene& scene, double tolerance, 
   SceneFrame frame;
   frame.prepare(scene);
   PassTimer timer;
-  frame.render(frame_inputs(scene, 8, 8), {}, nullptr, true, timer);
+  frame.render(frame_inputs(scene, 8, 8), {}, nullptr, {}, timer);
   frame.bind();
   const Texture table = upload_sun_table(optics::build_sun_table());
   std::mt19937 rng(11);
@@ -84,7 +84,7 @@ void check_scene(const std::string& name, const Scene& scene, double tolerance, 
     in.insert(in.end(), {glm::vec4(eye, float(k % scene.lights.size())), glm::vec4(random_unit(rng), 0.0f),
                          glm::vec4(t0, t0 + uniform(rng, 0, 12), 0, 0)});
   }
-  const std::string defines = frame_defines() + "#define TWIN_BINDING 8\n";
+  const std::string defines = frame.defines() + "#define TWIN_BINDING 8\n";
   const std::string table_defines =
       defines + "#define SUN_F_TABLE\n#define BINDING_SUN_TABLE " + std::to_string(sun_table_unit) + "\n";
   const auto shader_out = run_twin("gamma.comp.glsl", in, 3, 1, defines, 8);

@@ -109,7 +109,7 @@ TEST(SceneTwin, LightMapArrivalLegAndInscatter) {
   SceneFrame frame;
   frame.prepare(scene);
   PassTimer timer;
-  frame.render(frame_inputs(scene, 8, 8), {}, nullptr, true, timer);  // fills the frame block the twin reads
+  frame.render(frame_inputs(scene, 8, 8), {}, nullptr, {}, timer);  // fills the frame block the twin reads
   frame.bind();
   std::mt19937 rng(7);
   auto anywhere = [&] { return glm::vec3(uniform(rng, -3, 3), uniform(rng, -1, 5), uniform(rng, -3, 3)); };
@@ -129,7 +129,7 @@ TEST(SceneTwin, LightMapArrivalLegAndInscatter) {
     in.emplace_back(x, float(l));
     in.emplace_back(anywhere(), 0.0f);
   }
-  const auto out = run_twin("scene_light.comp.glsl", in, 2, 7, frame_defines() + "#define TWIN_BINDING 8\n",
+  const auto out = run_twin("scene_light.comp.glsl", in, 2, 7, frame.defines() + "#define TWIN_BINDING 8\n",
                             binding::first_free_storage);
   context.check("scene twin");
 
