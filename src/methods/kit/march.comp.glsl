@@ -11,6 +11,8 @@
 // `normalized`: the partial sums are divided by the pixel's light guide
 // (march.glsl) for interleaved's normalized gather; w says whether any light
 // reaches the ray.
+// Specialized by MarchPass: SAMPLING (SAMPLING_*), JITTER and NORMALIZED.
+#define SCENE_IN_REGISTERS
 #include "methods/kit/march.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -21,14 +23,14 @@ uniform int steps;         // N, of the whole march
 uniform int block;         // M
 uniform int first_sample;  // this dispatch: the pixel's own samples j = first_sample ..
 uniform int sample_count;  // first_sample + sample_count − 1, i.e. k = q + j·M²
-uniform bool jitter;       // offsets from jitter_offsets instead of 0.5
-uniform int sampling;      // SAMPLING_*
-uniform bool normalized;   // write sum / light_guide instead of the sum
 
 // Where in each step this pixel samples, in [0, 1).
 float step_offset(ivec2 pixel) {
-  if (!jitter) return 0.5;
+#ifdef JITTER
   return texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r;
+#else
+  return 0.5;
+#endif
 }
 
 SampleRange pixel_samples(ivec2 pixel) {
@@ -40,10 +42,15 @@ SampleRange pixel_samples(ivec2 pixel) {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, frame_size()))) return;
+  load_scene();
   vec3 dir = pixel_ray(vec2(pixel) + 0.5);
   float d = surface_distance(pixel);
-  vec3 sum = march_airlight(dir, d, pixel_samples(pixel), step_offset(pixel), sampling);
-  vec4 result = normalized ? guided(sum, light_guide(dir, d)) : vec4(sum, 1.0);
+  vec3 sum = march_airlight(dir, d, pixel_samples(pixel), step_offset(pixel));
+#ifdef NORMALIZED
+  vec4 result = guided(sum, light_guide(dir, d));
+#else
+  vec4 result = vec4(sum, 1.0);
+#endif
   if (first_sample > 0) result.rgb += imageLoad(airlight_out, pixel).rgb;
   imageStore(airlight_out, pixel, result);
 }

@@ -22,8 +22,8 @@
 //    directional lights (no 1/r²) keep uniform steps.
 #include "methods/kit/scene.glsl"
 
-const int SAMPLING_UNIFORM = 0;      // the `sampling` setting's choices, in order
-const int SAMPLING_EQUIANGULAR = 1;
+#define SAMPLING_UNIFORM 0      // the `sampling` setting's choices, in order (kit::Sampling)
+#define SAMPLING_EQUIANGULAR 1
 
 // Which of the N sample indices an invocation evaluates: k = first, first +
 // stride, … below end.
@@ -65,6 +65,14 @@ vec2 segment_sample(Segment s, float u, int n) {
 }
 
 // ---- marching -----------------------------------------------------------------
+// Loops over lights are unrolled by FOR_EACH_LIGHT (SceneFrame::defines), so
+// each light's index — and with it its type, shadow kind, gobo and beam — is a
+// constant in its copy of the code, and `group` is a constant at every call:
+// a sample pays only for the lights it evaluates, as they are.
+
+#ifndef SAMPLING
+#define SAMPLING SAMPLING_UNIFORM
+#endif
 
 const int ALL_LIGHTS = -1;      // `group` of march_segment: every light,
 const int UNBOUNDED_SUNS = -2;  // the directional lights without a beam, or one light (>= 0)
@@ -76,52 +84,64 @@ bool in_group(int i, int group) {
 }
 
 bool any_unbounded_sun() {
-  for (int i = 0; i < LIGHT_COUNT; ++i)
-    if (unbounded_sun(i)) return true;
-  return false;
+  bool any = false;
+#define OR_UNBOUNDED_SUN(i) any = any || unbounded_sun(i);
+  FOR_EACH_LIGHT(OR_UNBOUNDED_SUN)
+#undef OR_UNBOUNDED_SUN
+  return any;
 }
 
 // Σ over the range's samples k of w_k·Σ_{lights i in group} V_i·inscatter_i(x_k)
 // (Tóth eq. 1, Kingston eq. 26) on segment s of the ray eye + t·dir.
 vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) {
   if (!(s.b > s.a)) return vec3(0.0);
-  int lo = group >= 0 ? group : 0;
-  int hi = group >= 0 ? group + 1 : LIGHT_COUNT;
   vec3 eye = frame.eye;
   vec3 sum = vec3(0.0);
+  // Runtime bounds: the steps and this pixel's share of them are settings and
+  // pixel positions, not the scene's structure.
   for (int k = r.first; k < r.end; k += r.stride) {
     vec2 t = segment_sample(s, (float(k) + offset) / float(r.count), r.count);
     vec3 x = eye + t.x * dir;
     vec3 eye_depth = eye_leg_depth(eye, x);
     vec3 e = vec3(0.0);
-    for (int i = lo; i < hi; ++i) {
-      if (!in_group(i, group)) continue;
-      vec3 c = inscatter(i, x, dir, eye_depth);
-      if (c != vec3(0.0)) e += c * shadow_visibility(i, x);
+#define ADD_LIGHT_SAMPLE(i)                                  \
+    if (in_group(i, group)) {                                \
+      vec3 c = inscatter(i, x, dir, eye_depth);              \
+      if (c != vec3(0.0)) e += c * shadow_visibility(i, x);  \
     }
+    FOR_EACH_LIGHT(ADD_LIGHT_SAMPLE)
+#undef ADD_LIGHT_SAMPLE
     sum += e * t.y;
   }
   return sum;
+}
+
+// Equiangular: light i's own march over the part of [0, d] it lights, even in
+// the angle seen from a point or spot light, uniform over a beam's box.
+vec3 march_light(int i, vec3 dir, float d, SampleRange r, float offset) {
+  if (unbounded_sun(i)) return vec3(0.0);
+  vec3 eye = frame.eye;
+  vec2 lit = lit_interval(i, eye, dir, 0.0, d);
+  if (!(lit.y > lit.x)) return vec3(0.0);
+  Segment s = has_beam(i) ? uniform_segment(lit.x, lit.y) : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
+  return march_segment(dir, s, r, offset, i);
 }
 
 // L_air along the unit view ray `dir` up to distance d, over the range's samples.
 // Equiangular: one march per point or spot light over the part of [0, d] it
 // lights, one uniform march per beam over its box, and one uniform march for
 // the directional lights without a beam.
-vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset, int sampling) {
-  if (sampling == SAMPLING_UNIFORM) return march_segment(dir, uniform_segment(0.0, d), r, offset, ALL_LIGHTS);
+vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset) {
+#if SAMPLING == SAMPLING_UNIFORM
+  return march_segment(dir, uniform_segment(0.0, d), r, offset, ALL_LIGHTS);
+#else
   vec3 sum = vec3(0.0);
   if (any_unbounded_sun()) sum += march_segment(dir, uniform_segment(0.0, d), r, offset, UNBOUNDED_SUNS);
-  vec3 eye = frame.eye;
-  for (int i = 0; i < LIGHT_COUNT; ++i) {
-    if (unbounded_sun(i)) continue;
-    vec2 lit = lit_interval(i, eye, dir, 0.0, d);
-    if (!(lit.y > lit.x)) continue;
-    Segment s = has_beam(i) ? uniform_segment(lit.x, lit.y)
-                            : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
-    sum += march_segment(dir, s, r, offset, i);
-  }
+#define ADD_LIGHT_MARCH(i) sum += march_light(i, dir, d, r, offset);
+  FOR_EACH_LIGHT(ADD_LIGHT_MARCH)
+#undef ADD_LIGHT_MARCH
   return sum;
+#endif
 }
 
 // ---- the guide of interleaved's normalized gather -------------------------------
@@ -131,19 +151,20 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset, int sampling
 // lights of E times the length of [0, d] they light: L_air without σs·p, V, gobo, smooth edge and extinction. It
 // carries what changes fastest from pixel to pixel — the 1/h peak next to a
 // light, a cone's edge, the length of the ray — and is 0 where no light reaches.
-vec3 light_guide(vec3 dir, float d) {
+vec3 light_guide_of(int i, vec3 dir, float d) {
   vec3 eye = frame.eye;
+  vec2 lit = lit_interval(i, eye, dir, 0.0, d);
+  if (!(lit.y > lit.x)) return vec3(0.0);
+  if (light_types[i] == LIGHT_DIRECTIONAL) return LIGHT(i).color * (lit.y - lit.x);
+  Segment s = equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
+  return LIGHT(i).color * ((s.theta_b - s.theta_a) / s.h);
+}
+
+vec3 light_guide(vec3 dir, float d) {
   vec3 guide = vec3(0.0);
-  for (int i = 0; i < LIGHT_COUNT; ++i) {
-    vec2 lit = lit_interval(i, eye, dir, 0.0, d);
-    if (!(lit.y > lit.x)) continue;
-    if (light_types[i] == LIGHT_DIRECTIONAL) {
-      guide += LIGHT(i).color * (lit.y - lit.x);
-      continue;
-    }
-    Segment s = equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
-    guide += LIGHT(i).color * ((s.theta_b - s.theta_a) / s.h);
-  }
+#define ADD_LIGHT_GUIDE(i) guide += light_guide_of(i, dir, d);
+  FOR_EACH_LIGHT(ADD_LIGHT_GUIDE)
+#undef ADD_LIGHT_GUIDE
   return guide;
 }
 

@@ -50,17 +50,22 @@ void MarchPass::prepare() {
   glTextureSubImage2D(noise_.id(), 0, 0, 0, noise_size, noise_size, GL_RED, GL_FLOAT, offsets.data());
 }
 
+// The march's settings as constants of its program (march.comp.glsl).
+std::string MarchPass::defines() const {
+  std::string d = "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n";
+  d += "#define SAMPLING " + std::to_string(static_cast<int>(settings_.sampling)) + "\n";
+  if (settings_.jitter != Jitter::none) d += "#define JITTER\n";
+  if (settings_.normalized) d += "#define NORMALIZED\n";
+  return d;
+}
+
 void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   const int stride = settings_.block * settings_.block;
   const int own_samples = (settings_.steps + stride - 1) / stride;  // of pixel q = 0, the most
-  const gpu::Program& program = gpu::cached_compute_program(
-      "methods/kit/march.comp.glsl", frame.defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n");
+  const gpu::Program& program = gpu::cached_compute_program("methods/kit/march.comp.glsl", frame.defines() + defines());
   glUseProgram(program.id());
   gpu::set_uniform(program, "steps", settings_.steps);
   gpu::set_uniform(program, "block", settings_.block);
-  gpu::set_uniform(program, "jitter", settings_.jitter != Jitter::none ? 1 : 0);
-  gpu::set_uniform(program, "sampling", static_cast<int>(settings_.sampling));
-  gpu::set_uniform(program, "normalized", settings_.normalized ? 1 : 0);
   glBindTextureUnit(jitter_unit, noise_.id());
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   for (int first = 0; first < own_samples; first += samples_per_dispatch) {

@@ -44,6 +44,8 @@ public:
   double light_samples() const { return light_samples_; }
 
 private:
+  std::string defines() const;
+
   MarchSettings settings_;
   gpu::Texture noise_;
   double light_samples_ = 0.0;
