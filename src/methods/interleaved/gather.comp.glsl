@@ -26,21 +26,31 @@
 // that change exactly, so what the window shares is only the smooth remainder
 // (σs·p, V, extinction). Neighbours whose rays no light reaches (G = 0, w = 0)
 // are left out like those across silhouettes.
+// Specialized by GatherPass: BLOCK (M), VERTICAL, DEPTH_AWARE and NORMALIZED,
+// so that each pass's loops have constant trip counts and the horizontal pass
+// carries no light guide.
+#define SCENE_IN_REGISTERS
 #include "methods/kit/march.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D gathered;
 layout(binding = BINDING_PARTIAL) uniform sampler2D partial_sums;
 
-uniform int block;              // M
-uniform bool vertical;          // false: along rows, true: along columns
-uniform bool depth_aware;
 uniform float depth_threshold;  // relative to this pixel's distance
-uniform bool normalized;        // partial sums divided by the light guide
+
+#ifdef VERTICAL
+const ivec2 axis = ivec2(0, 1);  // along columns
+#else
+const ivec2 axis = ivec2(1, 0);  // along rows
+#endif
 
 bool same_surface(ivec2 neighbour, ivec2 pixel, float distance) {
-  if (!depth_aware || neighbour == pixel) return true;
+#ifdef DEPTH_AWARE
+  if (neighbour == pixel) return true;
   return abs(surface_distance(neighbour) - distance) <= depth_threshold * distance;
+#else
+  return true;
+#endif
 }
 
 // Whether the partial sum at `neighbour` joins this pixel's: on the same
@@ -53,41 +63,54 @@ bool joins(ivec2 neighbour, ivec2 pixel, float distance) {
 // windows that contain it and fit in the image, the one with the most joining
 // pixels, the centred one on ties. Next to a silhouette the window thus lies on
 // the pixel's side when that side is M pixels wide, and keeps every residue.
-int window_start(ivec2 pixel, ivec2 axis, int along, int size, float distance) {
-  int centred = clamp(along - (block - 1) / 2, 0, max(size - block, 0));
-  if (!depth_aware || size <= block) return centred;
-  int lo = max(along - block + 1, 0), hi = min(along, size - block);
+// The loops run over the 2M − 1 pixels around this one (a constant count) and
+// skip those outside [lo, hi + M).
+int window_start(ivec2 pixel, int along, int size, float distance) {
+  int centred = clamp(along - (BLOCK - 1) / 2, 0, max(size - BLOCK, 0));
+#ifdef DEPTH_AWARE
+  if (size <= BLOCK) return centred;
+  int lo = max(along - BLOCK + 1, 0), hi = min(along, size - BLOCK);
   uint joined = 0u;  // bit j: pixel lo + j joins
-  for (int s = lo; s < hi + block; ++s)
-    if (joins(pixel + (s - along) * axis, pixel, distance)) joined |= 1u << uint(s - lo);
+  for (int j = 0; j < 2 * BLOCK - 1; ++j) {
+    int s = along - BLOCK + 1 + j;
+    if (s >= lo && s < hi + BLOCK && joins(pixel + (s - along) * axis, pixel, distance)) joined |= 1u << uint(s - lo);
+  }
   int best = centred, most = -1;
-  for (int s = lo; s <= hi; ++s) {
-    int count = bitCount((joined >> uint(s - lo)) & ((1u << uint(block)) - 1u));
+  for (int j = 0; j < BLOCK; ++j) {
+    int s = along - BLOCK + 1 + j;
+    if (s < lo || s > hi) continue;
+    int count = bitCount((joined >> uint(s - lo)) & ((1u << uint(BLOCK)) - 1u));
     if (count > most || (count == most && abs(s - centred) < abs(best - centred))) {
       best = s;
       most = count;
     }
   }
   return best;
+#else
+  return centred;
+#endif
 }
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, frame_size()))) return;
-  ivec2 axis = vertical ? ivec2(0, 1) : ivec2(1, 0);
+  load_scene();
   int along = pixel.x * axis.x + pixel.y * axis.y;
   int size = frame_size().x * axis.x + frame_size().y * axis.y;
   float distance = surface_distance(pixel);
-  int start = window_start(pixel, axis, along, size, distance);
+  int start = window_start(pixel, along, size, distance);
   vec3 sum = vec3(0.0);
   int count = 0;
-  for (int s = start; s < min(start + block, size); ++s) {
+  for (int j = 0; j < BLOCK; ++j) {
+    int s = start + j;
     ivec2 neighbour = pixel + (s - along) * axis;
-    if (!joins(neighbour, pixel, distance)) continue;
+    if (s >= size || !joins(neighbour, pixel, distance)) continue;
     sum += texelFetch(partial_sums, neighbour, 0).rgb;
     ++count;
   }
-  if (count > 0) sum *= float(block) / float(count);
-  if (vertical && normalized) sum *= light_guide(pixel_ray(vec2(pixel) + 0.5), distance);
+  if (count > 0) sum *= float(BLOCK) / float(count);
+#if defined(VERTICAL) && defined(NORMALIZED)
+  sum *= light_guide(pixel_ray(vec2(pixel) + 0.5), distance);
+#endif
   imageStore(gathered, pixel, vec4(sum, count > 0 ? 1.0 : 0.0));
 }

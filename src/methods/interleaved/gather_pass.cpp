@@ -17,21 +17,20 @@ void GatherPass::run(const kit::SceneFrame& frame, const gpu::Texture& image) {
     height_ = frame.height();
     rows_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
   }
-  const gpu::Program& program = gpu::cached_compute_program(
-      "methods/interleaved/gather.comp.glsl",
-      frame.defines() + "#define BINDING_PARTIAL " + std::to_string(partial_unit) + "\n");
-  glUseProgram(program.id());
-  gpu::set_uniform(program, "block", settings_.block);
-  gpu::set_uniform(program, "depth_aware", settings_.depth_aware ? 1 : 0);
-  gpu::set_uniform(program, "depth_threshold", settings_.depth_threshold);
-  gpu::set_uniform(program, "normalized", settings_.normalized ? 1 : 0);
-  pass(program, frame, image, rows_, false);
-  pass(program, frame, rows_, image, true);
+  pass(frame, image, rows_, false);
+  pass(frame, rows_, image, true);
 }
 
-void GatherPass::pass(const gpu::Program& program, const kit::SceneFrame& frame, const gpu::Texture& from,
-                      const gpu::Texture& to, bool vertical) {
-  gpu::set_uniform(program, "vertical", vertical ? 1 : 0);
+// One direction's program: the settings as constants (gather.comp.glsl).
+void GatherPass::pass(const kit::SceneFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical) {
+  std::string defines = frame.defines() + "#define BINDING_PARTIAL " + std::to_string(partial_unit) + "\n" +
+                        "#define BLOCK " + std::to_string(settings_.block) + "\n";
+  if (vertical) defines += "#define VERTICAL\n";
+  if (settings_.depth_aware) defines += "#define DEPTH_AWARE\n";
+  if (settings_.normalized) defines += "#define NORMALIZED\n";
+  const gpu::Program& program = gpu::cached_compute_program("methods/interleaved/gather.comp.glsl", defines);
+  glUseProgram(program.id());
+  gpu::set_uniform(program, "depth_threshold", settings_.depth_threshold);
   glBindTextureUnit(partial_unit, from.id());
   glBindImageTexture(0, to.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gpu::dispatch_pixels(frame.width(), frame.height());

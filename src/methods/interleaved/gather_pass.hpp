@@ -23,8 +23,7 @@ public:
   void run(const kit::SceneFrame& frame, const gpu::Texture& image);
 
 private:
-  void pass(const gpu::Program& program, const kit::SceneFrame& frame, const gpu::Texture& from,
-            const gpu::Texture& to, bool vertical);
+  void pass(const kit::SceneFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical);
 
   GatherSettings settings_;
   gpu::Texture rows_;  // the horizontal pass's output
