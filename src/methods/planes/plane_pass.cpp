@@ -102,15 +102,11 @@ void PlanePass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   glBlendFunc(GL_ONE, GL_ONE);
   for (GLenum c = 0; c < 8; ++c) glEnable(GL_CLIP_DISTANCE0 + c);
   cos_edge_ = corner_cos(camera_.tan_half_fov_y, double(frame.width()) / frame.height());
-  const gpu::Program& program = gpu::cached_program(
-      {{GL_VERTEX_SHADER, "methods/planes/planes.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/planes/planes.frag.glsl"}},
-      frame.defines() + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n");
-  glUseProgram(program.id());
   glBindTextureUnit(jitter_unit, noise_.id());
   glBindVertexArray(mesh_.id());
   planes_drawn_ = 0.0;
   if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
-  for (int i = 0; i < static_cast<int>(regions_.bounds().size()); ++i) draw_light(program, i, regions_.bounds()[i]);
+  for (int i = 0; i < static_cast<int>(regions_.bounds().size()); ++i) draw_light(frame, i, regions_.bounds()[i]);
   if (invocations_) {
     glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
     GLuint64 count = 0;
@@ -124,16 +120,26 @@ void PlanePass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void PlanePass::draw_light(const gpu::Program& program, int light, const kit::LightBounds& volume) {
+// Light `light`'s program: its index and the settings as constants (planes.frag.glsl).
+std::string PlanePass::defines(int light) const {
+  std::string d = "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n#define PLANE_LIGHT " +
+                  std::to_string(light) + "\n";
+  if (settings_.lattice > 0) d += "#define LATTICE_XI\n";
+  if (settings_.jitter != kit::Jitter::none) d += "#define JITTER\n";
+  if (settings_.lit_sampling) d += "#define LIT_SAMPLING\n";
+  return d;
+}
+
+void PlanePass::draw_light(const kit::SceneFrame& frame, int light, const kit::LightBounds& volume) {
   const Slabs s = slabs(volume);
   if (s.count == 0) return;
   const std::vector<glm::vec4> clip = settings_.clip ? volume.clip : std::vector<glm::vec4>{};
-  gpu::set_uniform(program, "light", light);
+  const gpu::Program& program = gpu::cached_program(
+      {{GL_VERTEX_SHADER, "methods/planes/planes.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/planes/planes.frag.glsl"}},
+      frame.defines() + defines(light));
+  glUseProgram(program.id());
   gpu::set_uniform(program, "lattice", std::max(settings_.lattice, 1));
-  gpu::set_uniform(program, "lattice_xi", settings_.lattice > 0 ? 1 : 0);
   gpu::set_uniform(program, "dz", s.dz);
-  gpu::set_uniform(program, "jitter", settings_.jitter != kit::Jitter::none ? 1 : 0);
-  gpu::set_uniform(program, "lit_sampling", settings_.lit_sampling ? 1 : 0);
   gpu::set_uniform(program, "clip_planes", clip);
   gpu::set_uniform(program, "clip_count", static_cast<int>(clip.size()));
   // A sample lies anywhere in its slab, up to dz/2 in depth, i.e. dz/(2 cos)

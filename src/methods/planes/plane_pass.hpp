@@ -52,7 +52,8 @@ private:
     float dz = 0.0f;
   };
   Slabs slabs(const kit::LightBounds& volume) const;
-  void draw_light(const gpu::Program& program, int light, const kit::LightBounds& volume);
+  std::string defines(int light) const;
+  void draw_light(const kit::SceneFrame& frame, int light, const kit::LightBounds& volume);
 
   PlaneSettings settings_;
   geometry::CameraBasis camera_;

@@ -8,15 +8,18 @@
 // lit interval: only that part counts, sampled at its middle (or at the
 // pixel's jitter offset), so a surface inside a slab gets no step of up to dz
 // in its fog and a shaft's edge no step across it.
+//
+// Specialized by PlanePass, one program per light: PLANE_LIGHT (the light's
+// index), LATTICE_XI (ξ from the lattice), JITTER (per-pixel offsets of the
+// samples within their slabs, Dobashi §7) and LIT_SAMPLING (the slab's lit
+// piece, else the slab as Dobashi).
+#define SCENE_IN_REGISTERS
 #include "methods/planes/view_ray.glsl"
 
 layout(binding = BINDING_JITTER) uniform sampler2D jitter_offsets;  // R32F tile of values in [0, 1)
 
-uniform int light;
-uniform bool lattice_xi;
+const int light = PLANE_LIGHT;
 uniform float dz;
-uniform bool jitter;  // per-pixel offset of the samples within their slabs (Dobashi §7's jittering)
-uniform bool lit_sampling;  // sample the slab's lit piece (else the slab, as Dobashi)
 
 // A piece [ta, tb] of the ray eye + t·dir in the equiangular substitution of
 // Kulla & Fajardo 2012, for the falloff f = 1/(a1 r² + a0) of a point or spot
@@ -83,6 +86,7 @@ in vec3 xi;
 layout(location = 0) out vec4 airlight;
 
 void main() {
+  load_scene();
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec3 dir = pixel_ray(gl_FragCoord.xy);
   float cos_axis = dot(dir, frame.forward);
@@ -93,13 +97,28 @@ void main() {
   // light can arrive (a spot's cone, a beam's box): the sample never falls
   // outside a shaft that crosses the slab, so shafts keep their edges and thin
   // pieces (a ray grazing a spot's apex) their light.
-  vec2 lit = lit_sampling ? lit_interval(light, eye, dir, z0 / cos_axis, z1 / cos_axis) : vec2(z0, z1) / cos_axis;
+#ifdef LIT_SAMPLING
+  vec2 lit = lit_interval(light, eye, dir, z0 / cos_axis, z1 / cos_axis);
+#else
+  vec2 lit = vec2(z0, z1) / cos_axis;
+#endif
   if (!(lit.y > lit.x)) discard;
-  float offset = jitter ? texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r : 0.5;
+#ifdef JITTER
+  float offset = texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r;
+#else
+  float offset = 0.5;
+#endif
   vec3 light_position = LIGHT(light).position;
-  bool by_angle = lit_sampling && !lattice_xi && light_types[light] != LIGHT_DIRECTIONAL;
-  Piece p = by_angle ? angular_piece(light_position, eye, dir, lit) : even_piece(lit);
-  int n = lit_sampling ? piece_samples(light, p, dir) : 1;
+#if defined(LIT_SAMPLING) && !defined(LATTICE_XI)
+  Piece p = light_types[light] != LIGHT_DIRECTIONAL ? angular_piece(light_position, eye, dir, lit) : even_piece(lit);
+#else
+  Piece p = even_piece(lit);
+#endif
+#ifdef LIT_SAMPLING
+  int n = piece_samples(light, p, dir);
+#else
+  int n = 1;
+#endif
   vec3 sum = vec3(0.0);
   for (int k = 0; k < n; ++k) {
     vec2 s = piece_sample(p, light_position, eye, dir, (float(k) + offset) / float(n), n);
@@ -108,7 +127,11 @@ void main() {
     if (map == vec3(0.0) || shadow_visibility(light, x) == 0.0) continue;
     // ξ per unit length along the ray (the lattice's is per unit depth) times
     // the sample's weight: Δt, or ∫ f dt / f(r), trading ξ's falloff for its integral.
-    vec3 xi_here = lattice_xi ? xi * cos_axis : inscatter_unmapped(light, x, dir, eye_leg_depth(eye, x));
+#ifdef LATTICE_XI
+    vec3 xi_here = xi * cos_axis;
+#else
+    vec3 xi_here = inscatter_unmapped(light, x, dir, eye_leg_depth(eye, x));
+#endif
     sum += map * xi_here * s.y;
   }
   if (sum == vec3(0.0)) discard;

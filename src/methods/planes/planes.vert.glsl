@@ -10,11 +10,12 @@
 // through the shared inscatter without the light map) is evaluated at the
 // lattice's vertices at the slab's middle and interpolated across each cell,
 // as Gouraud shading did in the paper.
+// Specialized as planes.frag.glsl: PLANE_LIGHT, LATTICE_XI (ξ per vertex, else
+// per fragment: `xi` unused).
 #include "methods/planes/view_ray.glsl"
 
-uniform int light;        // index into lights[]
+const int light = PLANE_LIGHT;  // index into lights[]
 uniform int lattice;      // cells per side of the mesh
-uniform bool lattice_xi;  // ξ per vertex (else per fragment: `xi` unused)
 uniform float dz;         // slab thickness in view depth
 uniform vec4 clip_planes[8];  // world half-spaces dot(xyz, x) + w >= 0
 uniform int clip_count;
@@ -41,5 +42,9 @@ void main() {
     gl_ClipDistance[c] = c < clip_count ? dot(clip_planes[c].xyz, x) + clip_planes[c].w + clip_margin : 1.0;
   // Per unit view depth: a step dz in depth is dz·|ray| = dz/cos along the ray
   // (Nilsson ch. 3, footnote 1).
-  xi = lattice_xi ? inscatter_unmapped(light, x, normalize(ray), eye_leg_depth(eye, x)) * length(ray) : vec3(0.0);
+#ifdef LATTICE_XI
+  xi = inscatter_unmapped(light, x, normalize(ray), eye_leg_depth(eye, x)) * length(ray);
+#else
+  xi = vec3(0.0);
+#endif
 }
