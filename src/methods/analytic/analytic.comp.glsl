@@ -4,6 +4,7 @@
 // plane). No samples along the ray, hence no shadow-map lookups: the method has
 // no volumetric shadows (Kingston §5.2.3). With SUN_F_TABLE, Γ reads Sun et
 // al.'s F(u, v) from the table at BINDING_SUN_TABLE instead of integrating it.
+#define SCENE_IN_REGISTERS
 #include "methods/kit/closed_form.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -12,9 +13,12 @@ layout(rgba32f, binding = 0) writeonly uniform image2D airlight_out;
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, frame_size()))) return;
+  load_scene();
   vec3 dir = pixel_ray(vec2(pixel) + 0.5);
   float d = surface_distance(pixel);
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < LIGHT_COUNT; ++i) sum += closed_form_airlight(i, frame.eye, dir, 0.0, d);
+#define ADD_GAMMA(i) sum += closed_form_airlight(i, frame.eye, dir, 0.0, d);
+  FOR_EACH_LIGHT(ADD_GAMMA)
+#undef ADD_GAMMA
   imageStore(airlight_out, pixel, vec4(sum, 1.0));
 }

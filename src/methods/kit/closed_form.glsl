@@ -13,28 +13,40 @@ layout(binding = BINDING_SUN_TABLE) uniform sampler2D sun_table;
 
 bool isotropic_medium() { return MEDIUM_ISOTROPIC != 0; }
 
-// Sun et al. (Kingston eqs. 36-40) over [a, b] per channel, times the eye's extinction to a.
-vec3 sun_piece(int i, vec3 eye, vec3 dir, float a, float b) {
-  vec3 origin = eye + a * dir, sum;
-  for (int c = 0; c < 3; ++c) {
+// Sun et al. (Kingston eqs. 36-40) over [a, b] per channel, times the eye's
+// extinction to a. Γ is linear in the intensity: in grey media one channel with
+// I = 1, times the light's colour, gives all three.
+float sun_channel(int c, vec3 origin, vec3 dir, vec3 light, float I, float length) {
 #ifdef SUN_F_TABLE
-    float g = sun_airlight_table(sun_table, frame.medium_sigma_s[c], frame.medium_sigma_t[c], LIGHT(i).color[c], origin, dir,
-                                 LIGHT(i).position, b - a);
+  return sun_airlight_table(sun_table, frame.medium_sigma_s[c], frame.medium_sigma_t[c], I, origin, dir, light, length);
 #else
-    float g = sun_airlight_ray(frame.medium_sigma_s[c], frame.medium_sigma_t[c], LIGHT(i).color[c], origin, dir,
-                               LIGHT(i).position, b - a);
+  return sun_airlight_ray(frame.medium_sigma_s[c], frame.medium_sigma_t[c], I, origin, dir, light, length);
 #endif
-    sum[c] = exp(-frame.medium_sigma_t[c] * a) * g;
-  }
+}
+
+vec3 sun_piece(int i, vec3 eye, vec3 dir, float a, float b) {
+  vec3 origin = eye + a * dir;
+#if GREY_MEDIA
+  return exp(-frame.medium_sigma_t.r * a) * sun_channel(0, origin, dir, LIGHT(i).position, 1.0, b - a) * LIGHT(i).color;
+#else
+  vec3 sum;
+  for (int c = 0; c < 3; ++c)
+    sum[c] = exp(-frame.medium_sigma_t[c] * a) * sun_channel(c, origin, dir, LIGHT(i).position, LIGHT(i).color[c], b - a);
   return sum;
+#endif
 }
 
 vec3 nilsson_piece(int i, vec3 eye, vec3 dir, float a, float b) {
+#if GREY_MEDIA
+  return nilsson_airlight(frame.medium_sigma_s.r, 1.0, frame.light_model_a0, frame.light_model_a1, eye, dir,
+                          LIGHT(i).position, a, b) * LIGHT(i).color;
+#else
   vec3 sum;
   for (int c = 0; c < 3; ++c)
     sum[c] = nilsson_airlight(frame.medium_sigma_s[c], LIGHT(i).color[c], frame.light_model_a0, frame.light_model_a1, eye,
                               dir, LIGHT(i).position, a, b);
   return sum;
+#endif
 }
 
 // gamma.cpp biri_angular: ∫ p(cos θ)·cone·exp(-σt(x + r))/r² dx over [t0, t1],
@@ -45,7 +57,7 @@ vec3 biri_angular(int i, vec3 eye, vec3 dir, float t0, float t1) {
   vec3 off = delta - xs * dir;
   float h_true = length(off), h = max(h_true, MIN_LIGHT_DISTANCE);
   vec3 normal = h_true > 0.0 ? off / h_true : normalize(cross(dir, vec3(dir.y, dir.z, -dir.x)));
-  bool smooth_edge = light_types[i] == LIGHT_SPOT && LIGHT(i).edge > 0.0;
+  bool smooth_edge = light_types[i] == LIGHT_SPOT && light_edges[i];
   vec3 sigma_t = frame.medium_sigma_t;
   float fast = max(sigma_t.r, max(sigma_t.g, sigma_t.b)), slow = min(sigma_t.r, min(sigma_t.g, sigma_t.b));
   float s0 = stable_asinh((t0 - xs) / h), s1 = stable_asinh((t1 - xs) / h);
@@ -74,7 +86,7 @@ vec3 biri_angular(int i, vec3 eye, vec3 dir, float t0, float t1) {
 vec3 local_piece(int i, vec3 eye, vec3 dir, float a, float b) {
   if (!(b > a)) return vec3(0.0);
   if (simplified_model()) return nilsson_piece(i, eye, dir, a, b);
-  bool smooth_edge = light_types[i] == LIGHT_SPOT && LIGHT(i).edge > 0.0;
+  bool smooth_edge = light_types[i] == LIGHT_SPOT && light_edges[i];
   if (isotropic_medium() && !smooth_edge) return sun_piece(i, eye, dir, a, b);
   return frame.medium_sigma_s * LIGHT(i).color * biri_angular(i, eye, dir, a, b);
 }
@@ -85,7 +97,7 @@ vec3 local_piece(int i, vec3 eye, vec3 dir, float a, float b) {
 vec3 spot_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
   vec3 apex = LIGHT(i).position, axis = LIGHT(i).direction;
   float cone = LIGHT(i).cone, inner = cone - LIGHT(i).edge;
-  bool cut = LIGHT(i).edge > 0.0 && inner > 0.0 && !simplified_model();
+  bool cut = light_edges[i] && inner > 0.0 && !simplified_model();
   ConeIntervals lit = cone_intervals(apex, axis, cone, eye, dir, t0, t1);
   vec3 sum = vec3(0.0);
   for (int k = 0; k < lit.count; ++k) {

@@ -45,6 +45,7 @@ const int light_types[] = LIGHT_TYPES;      // LIGHT_* per light
 const int light_shadows[] = LIGHT_SHADOWS;  // SHADOW_* per light
 const bool light_gobos[] = LIGHT_GOBOS;     // whether a light samples a gobo
 const bool light_beams[] = LIGHT_BEAMS;     // a directional light bounded to its beam
+const bool light_edges[] = LIGHT_EDGES;     // a spot with a smooth edge (edge_deg > 0)
 
 #ifdef SCENE_IN_REGISTERS
 SceneLight scene_lights[LIGHT_COUNT > 0 ? LIGHT_COUNT : 1];
@@ -162,7 +163,7 @@ vec3 light_map(int i, vec3 x) {
     vec3 axis = LIGHT(i).direction, delta = x - LIGHT(i).position;
     float r = length(delta);
     vec3 dir = r > 0.0 ? delta / r : axis;  // at the apex: the axis, as light_arrival_unmapped
-    float cone = spot_cone(axis, LIGHT(i).cone, LIGHT(i).edge, dir);
+    float cone = spot_cone(axis, LIGHT(i).cone, light_edges[i] ? LIGHT(i).edge : 0.0, dir);  // a constant 0: the hard cut alone
     if (cone == 0.0) return vec3(0.0);
     vec2 uv = gobo_uv(axis, LIGHT(i).gobo_right, LIGHT(i).gobo_up, LIGHT(i).tan_cone, dir);
     return cone * gobo_colour(i, uv);

@@ -294,9 +294,10 @@ bool grey(const glm::vec3& c) { return c.r == c.g && c.g == c.b; }
 std::string structure_defines(const std::vector<SceneLight>& lights, const std::vector<SceneVolume>& volumes,
                               const std::vector<SceneLobe>& lobes, int medium_lobes, const FrameInputs& in) {
   std::vector<int> types, shadows;
-  std::vector<bool> gobos, beams;
+  std::vector<bool> gobos, beams, edges;
   for (const SceneLight& l : lights) {
     types.push_back(l.type);
+    edges.push_back(l.edge > 0.0f);
     shadows.push_back(l.shadow_kind);
     gobos.push_back(l.gobo_layer >= 0);
     beams.push_back(l.beam_length > 0.0f);
@@ -313,6 +314,7 @@ std::string structure_defines(const std::vector<SceneLight>& lights, const std::
   d += "#define LIGHT_SHADOWS " + glsl_array("int", shadows) + "\n";
   d += "#define LIGHT_GOBOS " + glsl_array("bool", gobos) + "\n";
   d += "#define LIGHT_BEAMS " + glsl_array("bool", beams) + "\n";
+  d += "#define LIGHT_EDGES " + glsl_array("bool", edges) + "\n";
   d += for_each("LIGHT", lights.size()) + for_each("VOLUME", volumes.size()) + for_each("LOBE", lobes.size());
   d += "#define MEDIUM_PHASE(c) " + phase_expression(lobes, 0, medium_lobes) + "\n";
   bool isotropic = true;
