@@ -2,6 +2,7 @@
 // timed per frame and per pass, with its memory and its error against the
 // cached reference; a CSV, optional log–log plots and an equal-quality table.
 #include "app/commands.hpp"
+#include "app/floor.hpp"
 #include "app/measure.hpp"
 #include "app/method_settings.hpp"
 #include "app/plot.hpp"
@@ -28,6 +29,7 @@ struct BenchOptions {
   std::string csv, plot, cache;
   int warmup = 1, frames = 5;
   double equal_quality = 0.0;  // 0: no equal-quality report
+  bool floor = false;          // time the floor (floor.hpp) at each size
 };
 
 // --sweep method.key=v1,v2,...
@@ -56,7 +58,16 @@ struct Measurement {
   std::vector<std::pair<std::string, double>> pass_median_s;  // in the order the frame runs them
   double gpu_mib = 0.0, peak_rss_mib = 0.0, rel_rmse = 0.0, max_abs = 0.0;
   bool baseline = false;  // raymarch without jitter: brute force, the equal-quality yardstick
+  double samples = 0.0;   // light samples (marches) or fragments (planes) of a frame; 0: not a sampling method
+  double method_s = 0.0;  // the median seconds of the method's own passes (all but the shared frame's)
+  double floor_ns = 0.0;  // the floor's ns per sample at this size; 0: not timed
 };
+
+// The shared frame's passes; every other pass is the method's own.
+bool frame_pass(const std::string& pass) {
+  return pass == "gbuffer" || pass == "depth" || pass == "shadow" || pass == "surface" || pass == "engine" ||
+         pass == "readback";
+}
 
 Sweep parse_sweep(const std::string& text) {
   const auto eq = text.find('=');
@@ -150,13 +161,10 @@ std::vector<Scene> load_scenes(const BenchOptions& o) {
   return scenes;
 }
 
-Spread spread(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return {(values[(n - 1) / 2] + values[n / 2]) / 2, values.front(), values.back()};
+Spread spread(const std::vector<double>& values) {
+  return {median(values), *std::min_element(values.begin(), values.end()),
+          *std::max_element(values.begin(), values.end())};
 }
-
-double median(const std::vector<double>& values) { return spread(values).median; }
 
 // The value under `name` in a list kept in first-seen order, appended when absent.
 template <typename T>
@@ -200,6 +208,12 @@ FrameImages time_frames(Method& method, const Scene& scene, Size size, int warmu
   return frame;
 }
 
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
 // Prepares the method, times its frames (the reference: no warm-up and one frame,
 // it is slow and does not vary) and measures the last against `reference`.
 Measurement measure(const Variant& variant, const Scene& scene, Size size, const Image& reference,
@@ -218,6 +232,10 @@ Measurement measure(const Variant& variant, const Scene& scene, Size size, const
   method->prepare(scene);
   const FrameImages last = time_frames(*method, scene, size, is_reference ? 0 : o.warmup, m.frames, gpu_before, &m);
   m.peak_rss_mib = peak_rss_mib();
+  for (const auto& [name, value] : last.stats)
+    if (name == "light_samples" || name == "fragments") m.samples = std::max(value, 0.0);
+  for (const auto& [pass, seconds] : m.pass_median_s)
+    if (!frame_pass(pass)) m.method_s += seconds;
   const ImageError error = compare_images(last.airlight, reference);
   m.rel_rmse = error.rel_rmse;
   m.max_abs = error.max_abs;
@@ -231,18 +249,24 @@ std::vector<Measurement> run_bench(const BenchOptions& o, const std::vector<Scen
   for (const auto& scene : scenes)
     for (const auto& size : sizes) {
       const Image reference = cached_reference(scene, size.width, size.height, cache).airlight;
-      for (const auto& variant : variants) rows.push_back(measure(variant, scene, size, reference, o));
+      double floor_ns = 0.0;
+      if (o.floor) {
+        const FloorTimes f = time_floor(size.width, size.height, o.warmup, o.frames);
+        std::printf("floor %dx%d: full-screen pass %s s, march of %d steps %s s, %s ns per sample\n", size.width,
+                    size.height, number(f.fullscreen_s).c_str(), floor_steps, number(f.march_s).c_str(),
+                    number(f.ns_per_sample).c_str());
+        floor_ns = f.ns_per_sample;
+      }
+      for (const auto& variant : variants) {
+        rows.push_back(measure(variant, scene, size, reference, o));
+        rows.back().floor_ns = floor_ns;
+      }
     }
   return rows;
 }
 
 // ---- output ---------------------------------------------------------------------
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
 
 // Quoted when it holds a comma or a quote (RFC 4180).
 std::string csv_field(const std::string& text) {
@@ -275,7 +299,7 @@ void write_measurements(const std::filesystem::path& file, const std::vector<Mea
   std::vector<std::string> header{"scene", "width", "height", "method", "settings", "frames",
                                   "frame_median_s", "frame_min_s", "frame_max_s"};
   for (const auto& pass : passes) header.push_back(pass + "_median_s");
-  header.insert(header.end(), {"gpu_mib", "peak_rss_mib", "rel_rmse", "max_abs"});
+  header.insert(header.end(), {"gpu_mib", "peak_rss_mib", "rel_rmse", "max_abs", "ns_per_sample", "floor_ratio"});
   std::vector<std::vector<std::string>> table{header};
   for (const auto& m : rows) {
     std::vector<std::string> row{m.scene, std::to_string(m.size.width), std::to_string(m.size.height), m.method,
@@ -287,6 +311,9 @@ void write_measurements(const std::filesystem::path& file, const std::vector<Mea
       row.push_back(it == m.pass_median_s.end() ? "" : number(it->second));
     }
     row.insert(row.end(), {number(m.gpu_mib), number(m.peak_rss_mib), number(m.rel_rmse), number(m.max_abs)});
+    const double ns = m.samples > 0.0 ? m.method_s / m.samples * 1e9 : 0.0;
+    row.push_back(ns > 0.0 ? number(ns) : "");
+    row.push_back(ns > 0.0 && m.floor_ns > 0.0 ? number(ns / m.floor_ns) : "");
     table.push_back(std::move(row));
   }
   write_csv(file, table);
@@ -421,6 +448,9 @@ Run add_bench_command(CLI::App& cli) {
   c->add_option("--equal-quality", o->equal_quality,
                 "E: per method the cheapest run with rRMSE <= E, timed against brute-force raymarch")
       ->check(CLI::PositiveNumber);
+  c->add_flag("--floor", o->floor,
+              "time a minimal full-screen pass and a minimal march at each size (printed); ns_per_sample over "
+              "the floor's is the CSV's floor_ratio");
   c->add_option("--cache", o->cache, "reference cache directory (default $AIRLIGHT_CACHE or ~/.cache/airlight)");
   return [o] { bench(*o); };
 }
