@@ -61,6 +61,7 @@ struct Measurement {
   double samples = 0.0;   // light samples (marches) or fragments (planes) of a frame; 0: not a sampling method
   double method_s = 0.0;  // the median seconds of the method's own passes (all but the shared frame's)
   double floor_ns = 0.0;  // the floor's ns per sample at this size; 0: not timed
+  double first_frame_s = 0.0;  // the first frame: it compiles the programs of a new define set
 };
 
 // The shared frame's passes; every other pass is the method's own.
@@ -195,7 +196,10 @@ FrameImages time_frames(Method& method, const Scene& scene, Size size, int warmu
     const auto start = std::chrono::steady_clock::now();
     frame = render(method, scene, size.width, size.height, false);  // bench measures L_air alone
     const double seconds = seconds_since(start);
-    if (i == 0) m->gpu_mib = (static_cast<double>(gpu::allocated_bytes()) - gpu_before) / (1 << 20);
+    if (i == 0) {
+      m->gpu_mib = (static_cast<double>(gpu::allocated_bytes()) - gpu_before) / (1 << 20);
+      m->first_frame_s = seconds;
+    }
     progress.advance();
     if (i < warmup) continue;
     frame_s.push_back(seconds);
@@ -297,14 +301,14 @@ std::vector<std::string> pass_names(const std::vector<Measurement>& rows) {
 void write_measurements(const std::filesystem::path& file, const std::vector<Measurement>& rows) {
   const auto passes = pass_names(rows);
   std::vector<std::string> header{"scene", "width", "height", "method", "settings", "frames",
-                                  "frame_median_s", "frame_min_s", "frame_max_s"};
+                                  "frame_median_s", "frame_min_s", "frame_max_s", "first_frame_s"};
   for (const auto& pass : passes) header.push_back(pass + "_median_s");
   header.insert(header.end(), {"gpu_mib", "peak_rss_mib", "rel_rmse", "max_abs", "ns_per_sample", "floor_ratio"});
   std::vector<std::vector<std::string>> table{header};
   for (const auto& m : rows) {
     std::vector<std::string> row{m.scene, std::to_string(m.size.width), std::to_string(m.size.height), m.method,
                                  m.settings, std::to_string(m.frames), number(m.frame.median),
-                                 number(m.frame.min), number(m.frame.max)};
+                                 number(m.frame.min), number(m.frame.max), number(m.first_frame_s)};
     for (const auto& pass : passes) {
       const auto it = std::find_if(m.pass_median_s.begin(), m.pass_median_s.end(),
                                    [&](const auto& p) { return p.first == pass; });
