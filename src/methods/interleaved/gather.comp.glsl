@@ -44,42 +44,42 @@ const ivec2 axis = ivec2(0, 1);  // along columns
 const ivec2 axis = ivec2(1, 0);  // along rows
 #endif
 
-bool same_surface(ivec2 neighbour, ivec2 pixel, float distance) {
-#ifdef DEPTH_AWARE
-  if (neighbour == pixel) return true;
-  return abs(surface_distance(neighbour) - distance) <= depth_threshold * distance;
-#else
-  return true;
-#endif
-}
+// The 2M − 1 pixels around this one along the axis, s = along − M + 1 + j for
+// j = 0 … 2M − 2, each fetched once: every window containing the pixel lies
+// among them.
+const int SPAN = 2 * BLOCK - 1;
+vec3 partial[SPAN];
+bool joined[SPAN];  // inside the image, reached by some light (normalized), and on this pixel's surface
 
-// Whether the partial sum at `neighbour` joins this pixel's: on the same
-// surface, and (normalized) reached by some light.
-bool joins(ivec2 neighbour, ivec2 pixel, float distance) {
-  return texelFetch(partial_sums, neighbour, 0).w != 0.0 && same_surface(neighbour, pixel, distance);
+void fetch_neighbourhood(ivec2 pixel, int along, int size, float distance) {
+  for (int j = 0; j < SPAN; ++j) {
+    int s = along - BLOCK + 1 + j;
+    ivec2 neighbour = pixel + (clamp(s, 0, size - 1) - along) * axis;
+    vec4 p = texelFetch(partial_sums, neighbour, 0);
+    partial[j] = p.rgb;
+    joined[j] = s >= 0 && s < size && p.w != 0.0;
+#ifdef DEPTH_AWARE
+    joined[j] = joined[j] && (j == BLOCK - 1 ||
+                              abs(surface_distance(neighbour) - distance) <= depth_threshold * distance);
+#endif
+  }
 }
 
 // The first pixel (along the axis) of this pixel's window of M: of the M
 // windows that contain it and fit in the image, the one with the most joining
 // pixels, the centred one on ties. Next to a silhouette the window thus lies on
 // the pixel's side when that side is M pixels wide, and keeps every residue.
-// The loops run over the 2M − 1 pixels around this one (a constant count) and
-// skip those outside [lo, hi + M).
-int window_start(ivec2 pixel, int along, int size, float distance) {
+int window_start(int along, int size) {
   int centred = clamp(along - (BLOCK - 1) / 2, 0, max(size - BLOCK, 0));
 #ifdef DEPTH_AWARE
   if (size <= BLOCK) return centred;
   int lo = max(along - BLOCK + 1, 0), hi = min(along, size - BLOCK);
-  uint joined = 0u;  // bit j: pixel lo + j joins
-  for (int j = 0; j < 2 * BLOCK - 1; ++j) {
-    int s = along - BLOCK + 1 + j;
-    if (s >= lo && s < hi + BLOCK && joins(pixel + (s - along) * axis, pixel, distance)) joined |= 1u << uint(s - lo);
-  }
   int best = centred, most = -1;
-  for (int j = 0; j < BLOCK; ++j) {
+  for (int j = 0; j < BLOCK; ++j) {  // window s = along − M + 1 + j covers neighbourhood j … j + M − 1
     int s = along - BLOCK + 1 + j;
     if (s < lo || s > hi) continue;
-    int count = bitCount((joined >> uint(s - lo)) & ((1u << uint(BLOCK)) - 1u));
+    int count = 0;
+    for (int k = 0; k < BLOCK; ++k) count += joined[j + k] ? 1 : 0;
     if (count > most || (count == most && abs(s - centred) < abs(best - centred))) {
       best = s;
       most = count;
@@ -98,15 +98,14 @@ void main() {
   int along = pixel.x * axis.x + pixel.y * axis.y;
   int size = frame_size().x * axis.x + frame_size().y * axis.y;
   float distance = surface_distance(pixel);
-  int start = window_start(pixel, along, size, distance);
+  fetch_neighbourhood(pixel, along, size, distance);
+  int first = window_start(along, size) - (along - BLOCK + 1);  // in the neighbourhood: 0 … M − 1
   vec3 sum = vec3(0.0);
   int count = 0;
-  for (int j = 0; j < BLOCK; ++j) {
-    int s = start + j;
-    ivec2 neighbour = pixel + (s - along) * axis;
-    if (s >= size || !joins(neighbour, pixel, distance)) continue;
-    sum += texelFetch(partial_sums, neighbour, 0).rgb;
-    ++count;
+  for (int j = 0; j < SPAN; ++j) {  // constant trip count: the window's M of the 2M − 1
+    bool in_window = j >= first && j < first + BLOCK && joined[j];
+    sum += in_window ? partial[j] : vec3(0.0);
+    count += in_window ? 1 : 0;
   }
   if (count > 0) sum *= float(BLOCK) / float(count);
 #if defined(VERTICAL) && defined(NORMALIZED)
