@@ -16,11 +16,11 @@ constexpr GLuint sun_table_unit = kit::binding::first_free_texture;  // BINDING_
 
 std::vector<SettingSpec> analytic_settings() {
   using T = SettingSpec::Type;
-  return {{"F", T::choice, 0, 0, 0, {"table", "shader"},
+  return {{"F", T::choice, 1, 0, 0, {"table", "shader"},
            "how Sun et al.'s F(u, v) = ∫_0^v exp(−u tan ξ) dξ is evaluated where Γ uses it (isotropic medium, "
            "physical light model, point lights and hard-edged spots; Kingston §5.2.1): table = bilinear in a "
-           "precomputed R32F texture (optics::SunTable, Kingston's choice), shader = Gauss–Legendre in the "
-           "shader. Other phase functions, smooth cone edges and the simplified model are integrated in the "
+           "precomputed R32F texture (optics::SunTable, Kingston's choice), shader (the default: the more "
+           "accurate and, on the seed scenes, the faster) = Gauss–Legendre in the shader. Other phase functions, smooth cone edges and the simplified model are integrated in the "
            "angle either way"}};
 }
 

@@ -8,11 +8,11 @@ namespace {
 const Case rows[] = {
   // interleaved (Tóth §4.1): each pixel marches N/16 of the samples; the 4×4 gather
   // blurs visibility across shadow and silhouette edges, a floor that does not fall with N.
-  {"interleaved", "teapot_spot", {"steps=256"}, 0.25,
+  {"interleaved", "teapot_spot", {"steps=256", "sampling=uniform"}, 0.25,
    "uniform steps as raymarch's (the spot's apex) plus the 4×4 blur (measured 0.175)"},
-  {"interleaved", "biri_sphere", {"steps=256"}, 4.5,
+  {"interleaved", "biri_sphere", {"steps=256", "sampling=uniform"}, 4.5,
    "uniform steps: the pixels beside the spot's apex dominate, as for raymarch (measured 3.36)"},
-  {"interleaved", "three_lights", {"steps=256"}, 0.35,
+  {"interleaved", "three_lights", {"steps=256", "sampling=uniform"}, 0.35,
    "uniform steps near the point light, as raymarch (measured 0.25)"},
   {"interleaved", "teapot_spot", {"steps=256", "sampling=equiangular"}, 0.02,
    "measured 0.010: the 4×4 gather's blur of the teapot's shadow edges"},

@@ -34,10 +34,10 @@ std::vector<SettingSpec> march_settings() {
           {"jitter", T::choice, 0, 0, 0, jitter_choices,
            "per-pixel offset of the samples within their steps (Kingston §5.1.1): none = the middle, "
            "white = hashed noise, blue = 64×64 void-and-cluster noise"},
-          {"sampling", T::choice, 0, 0, 0, samplings,
-           "where the steps go: uniform = even steps in distance (the documents'); equiangular = a march per "
-           "point or spot light, even in the angle seen from the light (Kulla & Fajardo 2012), over the part "
-           "of the ray inside a spot's cone: the 1/r² peak near a light is integrated exactly"}};
+          {"sampling", T::choice, 1, 0, 0, samplings,
+           "where the steps go: equiangular (the default) = a march per point or spot light, even in the angle "
+           "seen from the light (Kulla & Fajardo 2012), over the part of the ray inside a spot's cone: the 1/r² "
+           "peak near a light is integrated exactly; uniform = even steps in distance (the documents')"}};
 }
 
 MarchSettings MarchSettings::from(const Settings& s, int block, bool normalized) {

@@ -19,7 +19,7 @@ enum class Sampling { uniform, equiangular };
 struct MarchSettings {
   int steps = 64;                        // N
   Jitter jitter = Jitter::none;
-  Sampling sampling = Sampling::uniform;
+  Sampling sampling = Sampling::equiangular;
   int block = 1;                      // M: pixel q marches the samples k ≡ q (mod M²)
   bool normalized = false;            // divide each pixel's sum by its light guide (march.glsl)
 

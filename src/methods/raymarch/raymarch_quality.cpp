@@ -10,13 +10,13 @@ const Case rows[] = {
   // of a light has a 1/r² peak narrower than one step (far plane 50 m / 256), which
   // the samples miss or overshoot. Away from the lights the error is ~0.2% at
   // N = 256; these bounds are set by the few pixels beside each light.
-  {"raymarch", "teapot_spot", {"steps=256"}, 0.15,
+  {"raymarch", "teapot_spot", {"steps=256", "sampling=uniform"}, 0.15,
    "uniform steps: the pixels beside the spot's apex (measured 0.10); elsewhere the "
    "1024² shadow map's aliasing along the teapot's shadow edges"},
-  {"raymarch", "biri_sphere", {"steps=256"}, 4.0,
+  {"raymarch", "biri_sphere", {"steps=256", "sampling=uniform"}, 4.0,
    "uniform steps: 4 pixels beside the spot's apex read 0 where the reference has 5.9, "
    "against an image mean of 0.03 (measured 3.1)"},
-  {"raymarch", "three_lights", {"steps=256"}, 0.35,
+  {"raymarch", "three_lights", {"steps=256", "sampling=uniform"}, 0.35,
    "uniform steps: the point light's 1/r² peak between samples (measured 0.25), and its "
    "cube map (1024² faces) at the pillars' edges"},
   // Equiangular samples (Kulla & Fajardo 2012) integrate 1/r² exactly per light; what

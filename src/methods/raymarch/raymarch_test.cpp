@@ -72,7 +72,7 @@ TEST(Raymarch, ErrorFallsAsStepsGrow) {
   const Image& ref = reference_airlight(scene);
   double previous = INFINITY;
   for (int steps : {16, 64, 256}) {
-    const FrameImages frame = raymarch(scene, {"steps=" + std::to_string(steps)});
+    const FrameImages frame = raymarch(scene, {"steps=" + std::to_string(steps), "sampling=uniform"});
     const double error = rel_rmse(frame.airlight, ref);
     std::printf("teapot_spot %dx%d raymarch steps=%d: airlight rel. RMSE %.5f\n", width, height, steps, error);
     EXPECT_LT(error, previous) << "steps=" << steps;
@@ -94,7 +94,7 @@ class Equiangular : public ::testing::TestWithParam<const char*> {};
 TEST_P(Equiangular, CutsTheErrorNextToTheLight) {
   const Scene scene = builtin_scene(GetParam());
   const Image& ref = reference_airlight(scene);
-  const double uniform = rel_rmse(raymarch(scene, {"steps=64"}).airlight, ref);
+  const double uniform = rel_rmse(raymarch(scene, {"steps=64", "sampling=uniform"}).airlight, ref);
   std::vector<double> errors;
   for (int steps : {16, 64, 256})
     errors.push_back(
@@ -164,7 +164,7 @@ TEST(Raymarch, SimplifiedLightModel) {
   Scene scene = every_feature_scene();
   scene.name = "every_feature_simplified";
   scene.light_model = {LightModelType::simplified, 1.0f, 0.5f};  // Nilsson eq. 2.13: I / (a1 r² + a0)
-  const double error = rel_rmse(raymarch_small(scene, {"steps=256"}).airlight, small_reference(scene));
+  const double error = rel_rmse(raymarch_small(scene, {"steps=256", "sampling=uniform"}).airlight, small_reference(scene));
   std::printf("every_feature_simplified steps=256: airlight rel. RMSE %.5f\n", error);
   EXPECT_LT(error, 0.01);  // as SumsEveryFeatureOfTheModel
 }
@@ -178,9 +178,9 @@ TEST(Raymarch, SimplifiedLightModel) {
 TEST(Raymarch, JitterKeepsTheMean) {
   const Scene scene = every_feature_scene();
   const double reference_mean = mean(small_reference(scene));
-  const double base = mean(raymarch_small(scene, {"steps=32"}).airlight);
+  const double base = mean(raymarch_small(scene, {"steps=32", "sampling=uniform"}).airlight);
   for (const char* mode : {"white", "blue"}) {
-    const FrameImages frame = raymarch_small(scene, {"steps=32", std::string("jitter=") + mode});
+    const FrameImages frame = raymarch_small(scene, {"steps=32", "sampling=uniform", std::string("jitter=") + mode});
     ASSERT_TRUE(all_finite_and_non_negative(frame.airlight)) << mode;
     const double m = mean(frame.airlight);
     std::printf("jitter=%s: mean %.6f, none: %.6f, reference: %.6f\n", mode, m, base, reference_mean);
@@ -273,8 +273,8 @@ TEST(Raymarch, LongMarchesKeepEverySample) {
   s.volumes.push_back(s.volumes[0]);
   s.volumes[1].min = {0.5f, 0.0f, -3.0f};
   s.volumes[1].max = {2.5f, 2.0f, 0.0f};
-  const Image fine = raymarch(s, {"steps=4096"}, 32, 24).airlight;
-  const Image coarse = raymarch(s, {"steps=1024"}, 32, 24).airlight;
+  const Image fine = raymarch(s, {"steps=4096", "sampling=uniform"}, 32, 24).airlight;
+  const Image coarse = raymarch(s, {"steps=1024", "sampling=uniform"}, 32, 24).airlight;
   for (size_t i = 0; i < fine.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c)  // 1024 midpoint steps: ~1e-3 at the volumes' faces
       ASSERT_NEAR(fine.pixels[i][c], coarse.pixels[i][c], 0.005 * coarse.pixels[i][c]) << "pixel " << i;
