@@ -29,12 +29,12 @@
 // Specialized by GatherPass: BLOCK (M), VERTICAL, DEPTH_AWARE and NORMALIZED,
 // so that each pass's loops have constant trip counts and the horizontal pass
 // carries no light guide.
-#define SCENE_IN_REGISTERS
 #include "methods/kit/march.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D gathered;
 layout(binding = BINDING_PARTIAL) uniform sampler2D partial_sums;
+layout(binding = BINDING_GUIDE) uniform sampler2D guides;  // the march's light guide per pixel (normalized)
 
 uniform float depth_threshold;  // relative to this pixel's distance
 
@@ -94,7 +94,6 @@ int window_start(int along, int size) {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, frame_size()))) return;
-  load_scene();
   int along = pixel.x * axis.x + pixel.y * axis.y;
   int size = frame_size().x * axis.x + frame_size().y * axis.y;
   float distance = surface_distance(pixel);
@@ -109,7 +108,7 @@ void main() {
   }
   if (count > 0) sum *= float(BLOCK) / float(count);
 #if defined(VERTICAL) && defined(NORMALIZED)
-  sum *= light_guide(pixel_ray(vec2(pixel) + 0.5), distance);
+  sum *= texelFetch(guides, pixel, 0).rgb;
 #endif
   imageStore(gathered, pixel, vec4(sum, count > 0 ? 1.0 : 0.0));
 }

@@ -8,15 +8,17 @@ namespace airlight::methods {
 namespace {
 
 constexpr GLuint partial_unit = kit::binding::first_free_texture;
+constexpr GLuint guide_unit = partial_unit + 1;
 
 }  // namespace
 
-void GatherPass::run(const kit::SceneFrame& frame, const gpu::Texture& image) {
+void GatherPass::run(const kit::SceneFrame& frame, const gpu::Texture& image, const gpu::Texture& guide) {
   if (frame.width() != width_ || frame.height() != height_) {
     width_ = frame.width();
     height_ = frame.height();
     rows_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
   }
+  glBindTextureUnit(guide_unit, guide.id());
   pass(frame, image, rows_, false);
   pass(frame, rows_, image, true);
 }
@@ -24,7 +26,8 @@ void GatherPass::run(const kit::SceneFrame& frame, const gpu::Texture& image) {
 // One direction's program: the settings as constants (gather.comp.glsl).
 void GatherPass::pass(const kit::SceneFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical) {
   std::string defines = frame.defines() + "#define BINDING_PARTIAL " + std::to_string(partial_unit) + "\n" +
-                        "#define BLOCK " + std::to_string(settings_.block) + "\n";
+                        "#define BINDING_GUIDE " + std::to_string(guide_unit) + "\n" + "#define BLOCK " +
+                        std::to_string(settings_.block) + "\n";
   if (vertical) defines += "#define VERTICAL\n";
   if (settings_.depth_aware) defines += "#define DEPTH_AWARE\n";
   if (settings_.normalized) defines += "#define NORMALIZED\n";

@@ -19,8 +19,9 @@ public:
   explicit GatherPass(GatherSettings settings) : settings_(settings) {}
 
   // Replaces each pixel of `image` (RGBA32F of the frame's size) by the sum over
-  // its M×M window; the frame must be bound (SceneFrame::bind).
-  void run(const kit::SceneFrame& frame, const gpu::Texture& image);
+  // its M×M window, times the pixel's light guide from `guide` when normalized;
+  // the frame must be bound (SceneFrame::bind).
+  void run(const kit::SceneFrame& frame, const gpu::Texture& image, const gpu::Texture& guide);
 
 private:
   void pass(const kit::SceneFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical);

@@ -31,7 +31,7 @@ private:
       march_.run(frame, target);
     }
     gpu::ScopedPass pass(timer, "gather");
-    gather_.run(frame, target);
+    gather_.run(frame, target, march_.guide());
   }
 
   std::vector<std::pair<std::string, double>> stats() const override {

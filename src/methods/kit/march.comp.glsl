@@ -17,6 +17,9 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D airlight_out;  // accumulated over the dispatches
+#ifdef NORMALIZED
+layout(rgba32f, binding = 1) uniform writeonly image2D guide_out;  // the light guide, for the gather to multiply back
+#endif
 layout(binding = BINDING_JITTER) uniform sampler2D jitter_offsets;  // R32F tile of values in [0, 1)
 
 uniform int steps;         // N, of the whole march
@@ -47,7 +50,9 @@ void main() {
   float d = surface_distance(pixel);
   vec3 sum = march_airlight(dir, d, pixel_samples(pixel), step_offset(pixel));
 #ifdef NORMALIZED
-  vec4 result = guided(sum, light_guide(dir, d));
+  vec3 guide = light_guide(dir, d);
+  imageStore(guide_out, pixel, vec4(guide, 0.0));
+  vec4 result = guided(sum, guide);
 #else
   vec4 result = vec4(sum, 1.0);
 #endif

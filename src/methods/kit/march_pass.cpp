@@ -68,6 +68,14 @@ void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   gpu::set_uniform(program, "block", settings_.block);
   glBindTextureUnit(jitter_unit, noise_.id());
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  if (settings_.normalized) {
+    if (frame.width() != width_ || frame.height() != height_) {
+      guide_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, frame.width(), frame.height());
+      width_ = frame.width();
+      height_ = frame.height();
+    }
+    glBindImageTexture(1, guide_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  }
   for (int first = 0; first < own_samples; first += samples_per_dispatch) {
     gpu::set_uniform(program, "first_sample", first);
     gpu::set_uniform(program, "sample_count", std::min(samples_per_dispatch, own_samples - first));

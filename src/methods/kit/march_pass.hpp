@@ -40,6 +40,9 @@ public:
   // the frame must be bound (SceneFrame::bind).
   void run(const kit::SceneFrame& frame, const gpu::Texture& target);
 
+  // With `normalized`: each pixel's light guide from the last run (RGBA32F, rgb).
+  const gpu::Texture& guide() const { return guide_; }
+
   // Light samples evaluated by the last run (pixels × samples per pixel × lights).
   double light_samples() const { return light_samples_; }
 
@@ -48,6 +51,8 @@ private:
 
   MarchSettings settings_;
   gpu::Texture noise_;
+  gpu::Texture guide_;
+  int width_ = 0, height_ = 0;
   double light_samples_ = 0.0;
 };
 
