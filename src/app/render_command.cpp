@@ -3,6 +3,7 @@
 #include "app/method_settings.hpp"
 #include "app/scene_source.hpp"
 #include "core/image_io.hpp"
+#include "gpu/program.hpp"
 
 #include <airlight/error.hpp>
 #include <airlight/method.hpp>
@@ -66,6 +67,7 @@ void write_report(const RenderOptions& o, const Scene& scene, const Settings& se
       {"timings", {{"prepare_s", prepare_s}, {"render_s", render_s}, {"readback_s", frame.readback_s}, {"passes", passes}}},
       {"output", output},
       {"stats", stats},
+      {"programs_compiled", gpu::cached_program_count()},
       {"peak_rss_mib", peak_rss_mib()}};
   std::ofstream file(o.report);
   if (!(file << report.dump(2) << "\n")) throw Failure("cannot write " + o.report);
