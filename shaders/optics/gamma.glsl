@@ -46,13 +46,9 @@ float sun_airlight_table(sampler2D table, float sigma_s, float sigma_t, float I0
   float w0 = sun_tan_xi(-xs, r0, length(vec2(xs, r0))), w1 = sun_tan_xi(d - xs, r0, length(vec2(d - xs, r0)));
   float u = sigma_t * r0;
   float F0 = sun_table_F(table, u, w0, atan_unit_any(w0)), F1 = sun_table_F(table, u, w1, atan_unit_any(w1));
-  bool fallback = !(d > 0.0) || -sigma_t * xs > SUN_TABLE_MAX_GAIN || !(F1 + F0 <= SUN_TABLE_MAX_CONDITION * (F1 - F0));
-  float gamma = sigma_s * I0 / (2.0 * PI * r0) * exp(-sigma_t * xs) * (F1 - F0);
-  // A loop run at most once, not an if: llvmpipe evaluates both sides of an if
-  // in every invocation, but skips a loop that no lane enters, so the
-  // quadrature costs only where the table cannot be trusted.
-  for (int once = 0; once < (fallback ? 1 : 0); ++once) gamma = sun_segment(sigma_s, sigma_t, I0, xs, r0, d);
-  return gamma;
+  if (!(d > 0.0) || -sigma_t * xs > SUN_TABLE_MAX_GAIN || !(F1 + F0 <= SUN_TABLE_MAX_CONDITION * (F1 - F0)))
+    return sun_segment(sigma_s, sigma_t, I0, xs, r0, d);
+  return sigma_s * I0 / (2.0 * PI * r0) * exp(-sigma_t * xs) * (F1 - F0);
 }
 #endif
 

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Times two builds of airlight side by side: `bench/compare_builds.sh OLD NEW
+# BENCH-ARGS...` runs `airlight bench BENCH-ARGS` with each binary in turn
+# (512x384, 1 warm-up, 5 frames) and prints, per run, the median seconds of the
+# method's own passes (all but the shared frame's) for both, their ratio and
+# both errors. Build the old one from a worktree: git worktree add /tmp/old REV,
+# then cmake --preset release && cmake --build build/release --target airlight there.
+set -euo pipefail
+old=$1 new=$2
+shift 2
+dir=$(mktemp -d)
+"$old" bench "$@" --sizes 512x384 --warmup 1 --frames 5 --csv "$dir/old.csv" >/dev/null 2>&1
+"$new" bench "$@" --sizes 512x384 --warmup 1 --frames 5 --csv "$dir/new.csv" >/dev/null 2>&1
+python3 - "$dir/old.csv" "$dir/new.csv" <<'PY'
+import csv, sys
+frame = {'gbuffer', 'shadow', 'surface', 'depth', 'engine', 'readback'}
+def own(row):
+    return sum(float(v) for k, v in row.items()
+               if k.endswith('_median_s') and k != 'frame_median_s' and k[:-9] not in frame and v)
+old, new = (list(csv.DictReader(open(f))) for f in sys.argv[1:3])
+for a, b in zip(old, new):
+    keys = ' '.join(x for x in a['settings'].split() if x.startswith(('steps', 'sampling', 'F=', 'planes=')))
+    print(f"{a['scene']} {a['method']} {keys}: old {own(a):.4f} s, new {own(b):.4f} s, "
+          f"speed-up {own(a) / own(b):.2f}, rRMSE {a['rel_rmse']} / {b['rel_rmse']}")
+PY
