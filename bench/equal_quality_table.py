@@ -15,22 +15,31 @@ def short(settings, method):
             'analytic': ['F']}[method]
     kv = dict(x.split('=') for x in settings.split())
     return ' '.join(f'{k}={kv[k]}' for k in keep if k in kv)
+def ratio(text):
+    return f'{float(text):.2f}' if text else ''
+
+
 machine = open(results / 'machine.txt').read().split('\n')
 out = []
 out.append('### Latest output\n')
 out.append(f'`bench/sweeps.sh` (E = 0.05), run {machine[0]} on {machine[2]}, {machine[3]}, {machine[1]}; '
            'OpenGL on Mesa llvmpipe (no GPU), with other jobs sharing the cores. Frame times are medians of 2 '
-           'frames after 1 warm-up; `time_ratio` is the frame time over the cheapest jitter-free `raymarch` run '
-           'that reaches rRMSE ≤ E. Every CSV and plot is in `bench/results/`.\n')
+           'frames after 1 warm-up; `time / brute force` is the frame time over the cheapest `raymarch` run with '
+           'uniform steps and no jitter that reaches rRMSE ≤ E (the documents\' baseline), `time / best raymarch` '
+           'over the cheapest `raymarch` run of any settings that does. Every CSV and plot is in '
+           '`bench/results/`. An empty `time / brute force`: no such run reaches E (uniform steps up to N = 128 '
+           'stay above it beside the lights).\n')
 out.append('![error against time, stage 256×192](bench/results/seeds-stage-256x192.png)\n')
-out.append('| scene | size | method | cheapest setting with rRMSE ≤ 0.05 | frame s | rRMSE | time / raymarch |')
-out.append('|---|---|---|---|---|---|---|')
+out.append('| scene | size | method | cheapest setting with rRMSE ≤ 0.05 | frame s | rRMSE | time / brute force | '
+           'time / best raymarch |')
+out.append('|---|---|---|---|---|---|---|---|')
 for f in ['seeds', 'analytic']:
     for r in csv.DictReader(open(results / f'{f}-equal-quality.csv')):
         size = f"{r['width']}×{r['height']}"
-        if r['note']:
-            out.append(f"| {r['scene']} | {size} | {r['method']} | {r['note']} | | | |")
+        if not r['settings']:  # no run of the method reaches E
+            out.append(f"| {r['scene']} | {size} | {r['method']} | {r['note']} | | | | |")
         else:
             out.append(f"| {r['scene']} | {size} | {r['method']} | {short(r['settings'], r['method'])} | "
-                       f"{float(r['frame_median_s']):.3g} | {float(r['rel_rmse']):.2g} | {float(r['time_ratio']):.2f} |")
+                       f"{float(r['frame_median_s']):.3g} | {float(r['rel_rmse']):.2g} | {ratio(r['time_ratio'])} | "
+                       f"{ratio(r['time_ratio_best'])} |")
 print('\n'.join(out))

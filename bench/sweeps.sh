@@ -33,7 +33,7 @@ $airlight bench "${common[@]}" \
   --sweep raymarch.sampling=uniform,equiangular --sweep raymarch.steps=16,32,64,128 \
   --sweep interleaved.sampling=uniform,equiangular --sweep interleaved.steps=64,128 \
   --sweep planes.sampling=plane,lit --sweep planes.planes=15,30,75,150 \
-  --csv "$results/seeds.csv" --plot "$results/seeds.png"
+  --floor --csv "$results/seeds.csv" --plot "$results/seeds.png"
 
 $airlight bench "${common[@]}" \
   --scene bench/scenes/open_fog.json \
