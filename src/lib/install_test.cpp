@@ -64,7 +64,7 @@ TEST(Install, EngineExampleAgainstTheInstalledPackageMatchesRender) {
   // round trip through reversed-Z, which move shadow edges in the beam by a
   // texel or so. A wrong conversion moves whole regions (depth) or the beam's
   // shadow (shadow maps) and lands far above this.
-  constexpr double tolerance = 0.005;  // measured 0.001: shadow-edge texels of the example's own maps
+  constexpr double tolerance = 0.005;  // the shadow-edge texels of the example's own maps (docs/decisions.md)
   const ImageError error = compare_images(engine, reference);
   std::printf("engine example against render: rRMSE %.5f (bound %.3f), max abs %.4f\n", error.rel_rmse, tolerance,
               error.max_abs);

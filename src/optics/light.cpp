@@ -10,8 +10,6 @@
 namespace airlight::optics {
 namespace {
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
 glm::dvec3 spot_axis(const Light& light) { return glm::normalize(glm::dvec3(light.direction)); }
 
 // Hermite smoothstep of t clamped to [0, 1].

@@ -4,12 +4,15 @@
 // gobo across its aperture), and the distance attenuation of each light model.
 #include <airlight/scene.hpp>
 #include <array>
+#include <numbers>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "optics/slab.hpp"
 
 namespace airlight::optics {
+
+inline double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 // Spot cone factor in [0, 1] for the angle between the axis and `dir` (unit,
 // from the light): 1 inside cone_deg - edge_deg, smoothstep down to 0 at cone_deg.

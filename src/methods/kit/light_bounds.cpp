@@ -15,7 +15,6 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 // Half-space through `point` keeping the side `inward` points to.
 glm::vec4 half_space(const glm::dvec3& inward, const glm::dvec3& point) {
@@ -30,7 +29,7 @@ std::vector<glm::vec4> cone_pyramid(const Light& light) {
   const glm::dvec3 apex(light.position), axis = glm::normalize(glm::dvec3(light.direction));
   glm::dvec3 right, up;
   optics::gobo_frame(light, right, up);
-  const double a = radians(light.cone_deg);
+  const double a = optics::radians(light.cone_deg);
   std::vector<glm::vec4> planes;
   for (int k = 0; k < 8; ++k) {
     const double phi = k * std::numbers::pi / 4.0;
@@ -77,7 +76,7 @@ bool trace_from_apex(const Light& light, const reference::RayCaster& rays, std::
     glm::dvec3 right, up;
     optics::gobo_frame(light, right, up);
     const glm::dvec3 axis = glm::normalize(glm::dvec3(light.direction));
-    const double tan_cone = std::tan(radians(light.cone_deg));
+    const double tan_cone = std::tan(optics::radians(light.cone_deg));
     for_grid(lit_region_rays, [&](double s, double t) { cast(axis + tan_cone * (s * right + t * up)); });
   } else {
     for (int axis = 0; axis < 3; ++axis)

@@ -3,18 +3,17 @@
 #include "geometry/camera.hpp"
 #include "gpu/program.hpp"
 #include "methods/kit/frame_data.hpp"
+#include "methods/kit/scene_defines.hpp"
+#include "methods/kit/shadow_projection.hpp"
 #include "optics/light.hpp"
 
 #include <airlight/error.hpp>
 #include <algorithm>
-#include <array>
 #include <cfloat>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
-#include <limits>
 #include <numbers>
-#include <type_traits>
 
 namespace airlight::kit {
 
@@ -38,138 +37,6 @@ struct ObjectTransform {
   glm::mat4 model, normal;
 };
 
-enum ShadowKind { shadow_none = 0, shadow_map = 1, shadow_cube = 2 };
-
-// ---- geometry of the shadow maps ----------------------------------------------
-
-struct Bounds {
-  glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
-  bool empty() const { return !(lo.x <= hi.x); }
-  glm::dvec3 corner(int k) const { return {(k & 1 ? hi : lo).x, (k & 2 ? hi : lo).y, (k & 4 ? hi : lo).z}; }
-};
-
-void extend(Bounds& b, const glm::dvec3& p) {
-  b.lo = glm::min(b.lo, p);
-  b.hi = glm::max(b.hi, p);
-}
-
-// Object-space bounds of one mesh.
-std::pair<glm::dvec3, glm::dvec3> mesh_bounds(const Mesh& mesh) {
-  Bounds b;
-  for (const glm::vec3& p : mesh.positions) extend(b, glm::dvec3(p));
-  return {b.lo, b.hi};
-}
-
-// World bounds of the meshes this frame: each mesh's box corners through its transform.
-Bounds world_bounds(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& meshes,
-                    const std::vector<glm::mat4>& transforms) {
-  Bounds b;
-  for (size_t m = 0; m < meshes.size(); ++m) {
-    const Bounds local{meshes[m].first, meshes[m].second};
-    if (local.empty()) continue;
-    const glm::dmat4 model = transforms.empty() ? glm::dmat4(1.0) : glm::dmat4(transforms[m]);
-    for (int k = 0; k < 8; ++k) extend(b, glm::dvec3(model * glm::dvec4(local.corner(k), 1.0)));
-  }
-  return b;
-}
-
-// Far plane of a light's perspective maps: beyond every occluder. The near plane
-// at 1e-4 of it loses only occluders within millimetres of the light.
-struct NearFar {
-  double near, far;
-};
-NearFar perspective_range(const glm::dvec3& apex, const Bounds& b) {
-  double far = 0.0;
-  for (int k = 0; k < 8; ++k) far = std::max(far, glm::length(b.corner(k) - apex));
-  far = far * 1.01 + 1e-3;
-  return {far * 1e-4, far};
-}
-
-glm::dvec3 up_hint(const glm::dvec3& dir) {
-  return std::abs(dir.y) < 0.99 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
-}
-
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
-// World → clip of a 2D map, and its texel footprint per unit distance / constant.
-struct Projection {
-  glm::mat4 matrix{1.0f};
-  float per_distance = 0.0f, constant = 0.0f;
-};
-
-// A spot's cone in a square perspective map of field 2·cone.
-Projection spot_projection(const Light& light, const Bounds& b) {
-  const glm::dvec3 apex(light.position), axis = glm::normalize(glm::dvec3(light.direction));
-  const NearFar range = perspective_range(apex, b);
-  const double cone = radians(light.cone_deg);
-  const glm::dmat4 view = glm::lookAt(apex, apex + axis, up_hint(axis));
-  const glm::dmat4 proj = glm::perspective(2.0 * cone, 1.0, range.near, range.far);
-  return {glm::mat4(proj * view), static_cast<float>(2.0 * std::tan(cone)), 0.0f};
-}
-
-// A directional light: orthographic along the light, its depth range over the
-// scene's bounds (every occluder), its x/y extent over the bounds too (every
-// ray through them lands inside; points outside are lit) — or, for a beam,
-// over the beam's aperture: only points inside the beam are lit, so the
-// texels are spent there.
-Projection directional_projection(const Light& light, const Bounds& b) {
-  const glm::dvec3 dir = glm::normalize(glm::dvec3(light.direction));
-  glm::dvec3 eye = 0.5 * (b.lo + b.hi), up = up_hint(dir);
-  if (optics::has_beam(light)) {
-    glm::dvec3 right;
-    optics::gobo_frame(light, right, up);  // lookAt's x is then dir × up = right: the beam's frame
-    eye = glm::dvec3(light.beam->origin);
-  }
-  const glm::dmat4 view = glm::lookAt(eye, eye + dir, up);
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (int k = 0; k < 8; ++k) {
-    const glm::dvec3 p(view * glm::dvec4(b.corner(k), 1.0));
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  if (optics::has_beam(light)) {
-    const glm::dvec2 half = 0.5 * glm::dvec2(light.beam->size);
-    lo = glm::dvec3(-half, lo.z);
-    hi = glm::dvec3(half, hi.z);
-  }
-  const double margin = 1e-3 * glm::length(hi - lo) + 1e-6;
-  lo -= margin;
-  hi += margin;
-  const glm::dmat4 proj = glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z, -lo.z);  // view looks along -z
-  return {glm::mat4(proj * view), 0.0f, static_cast<float>(std::max(hi.x - lo.x, hi.y - lo.y))};
-}
-
-// Cube faces in GL's order +x −x +y −y +z −z, with the up vectors that make a
-// face rendered into a bottom-left-origin framebuffer agree with cube sampling.
-std::array<glm::mat4, 6> cube_face_matrices(const glm::dvec3& apex, const Bounds& b) {
-  static const std::array<std::pair<glm::dvec3, glm::dvec3>, 6> faces{{{{1, 0, 0}, {0, -1, 0}},
-                                                                        {{-1, 0, 0}, {0, -1, 0}},
-                                                                        {{0, 1, 0}, {0, 0, 1}},
-                                                                        {{0, -1, 0}, {0, 0, -1}},
-                                                                        {{0, 0, 1}, {0, -1, 0}},
-                                                                        {{0, 0, -1}, {0, -1, 0}}}};
-  const NearFar range = perspective_range(apex, b);
-  const glm::dmat4 proj = glm::perspective(0.5 * std::numbers::pi, 1.0, range.near, range.far);
-  std::array<glm::mat4, 6> matrices;
-  for (int f = 0; f < 6; ++f)
-    matrices[f] = glm::mat4(proj * glm::lookAt(apex, apex + faces[f].first, faces[f].second));
-  return matrices;
-}
-
-
-int shadow_kind(const Light& light, const Bounds& bounds) {
-  if (bounds.empty()) return shadow_none;  // nothing can occlude
-  if (light.type == LightType::point) return shadow_cube;
-  if (light.type == LightType::spot && light.cone_deg >= wide_spot_deg) return shadow_cube;
-  return shadow_map;
-}
-
-// The kind an engine's map gives a light, or the one airlight would draw.
-int shadow_kind(const Light& light, const Bounds& bounds, const EngineShadow* engine) {
-  if (!engine) return shadow_kind(light, bounds);
-  return engine->kind == EngineShadow::Kind::cube ? shadow_cube : shadow_map;
-}
-
 // The lights whose gobo the GPU samples: spots and beams (a gobo means nothing elsewhere).
 bool has_gobo(const Light& light) {
   return (light.type == LightType::spot || optics::has_beam(light)) && light.gobo && !light.gobo->empty();
@@ -177,12 +44,12 @@ bool has_gobo(const Light& light) {
 
 SceneLight light_record(const Light& light, int gobo_layer) {
   SceneLight g{};
-  const double cone = radians(light.cone_deg);
+  const double cone = optics::radians(light.cone_deg);
   const bool spot = light.type == LightType::spot, beam = optics::has_beam(light);
   g.position = beam ? light.beam->origin : light.position;
   g.cone = spot ? static_cast<float>(cone) : 0.0f;
   g.direction = glm::normalize(light.direction);
-  g.edge = spot ? static_cast<float>(radians(light.edge_deg)) : 0.0f;
+  g.edge = spot ? static_cast<float>(optics::radians(light.edge_deg)) : 0.0f;
   g.color = light.type == LightType::directional ? light.irradiance : light.intensity;
   const bool square = spot && cone < 0.5 * std::numbers::pi;  // gobo_uv needs tan(cone) finite
   g.tan_cone = square ? static_cast<float>(std::tan(cone)) : 0.0f;
@@ -201,23 +68,6 @@ SceneLight light_record(const Light& light, int gobo_layer) {
   g.shadow_kind = shadow_none;
   g.gobo_layer = gobo_layer;
   return g;
-}
-
-// A shadow texel's world size at distance r is (per_distance·r + constant) /
-// resolution: read off an engine's projection (perspective: 2/P₁₁ at unit
-// distance; orthographic: 2/P₁₁ everywhere), the larger of the two axes.
-Projection engine_projection(const EngineShadow& e) {
-  const glm::mat4& p = e.projection;
-  const float across = 2.0f / std::max(std::min(std::abs(p[0][0]), std::abs(p[1][1])), 1e-30f);
-  const bool perspective = p[3][3] == 0.0f;
-  return {p * e.view, perspective ? across : 0.0f, perspective ? 0.0f : across};
-}
-
-// The window depth a projection gives its far plane (1, or 0 under reversed-Z):
-// where an engine cleared its depth buffer, no surface or occluder was drawn.
-float far_window_depth(const glm::mat4& projection) {
-  const glm::vec4 near = projection * glm::vec4(0, 0, -1, 1), further = projection * glm::vec4(0, 0, -2, 1);
-  return further.z / further.w < near.z / near.w ? 0.0f : 1.0f;
 }
 
 // ---- textures -----------------------------------------------------------------
@@ -251,81 +101,21 @@ Buffer storage(const std::vector<T>& data) {
   return make_buffer(std::max<size_t>(data.size(), 1) * sizeof(T), data.empty() ? nullptr : data.data());
 }
 
+// A frame's data into `buffer`: written in place when its size is unchanged,
+// so that a frame allocates nothing.
+template <typename T>
+void update(Buffer& buffer, const std::vector<T>& data) {
+  const size_t bytes = std::max<size_t>(data.size(), 1) * sizeof(T);
+  GLint64 size = 0;
+  if (buffer) glGetNamedBufferParameteri64v(buffer.id(), GL_BUFFER_SIZE, &size);
+  if (static_cast<size_t>(size) != bytes)
+    buffer = storage(data);
+  else if (!data.empty())
+    glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), data.data());
+}
+
 const Program& frame_program(const char* vertex, const char* fragment, const std::string& defines) {
   return cached_program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, defines);
-}
-
-// ---- the scene's structure as GLSL constants (SceneFrame::defines) ------------
-
-template <typename T>
-std::string glsl_array(const char* type, const std::vector<T>& values) {
-  std::string text = std::string(type) + "[](";
-  if (values.empty()) text += std::is_same_v<T, bool> ? "false" : "0";  // GLSL has no empty arrays
-  for (size_t k = 0; k < values.size(); ++k) {
-    if (k) text += ", ";
-    if constexpr (std::is_same_v<T, bool>)
-      text += values[k] ? "true" : "false";
-    else
-      text += std::to_string(values[k]);
-  }
-  return text + ")";
-}
-
-// FOR_EACH_<WHAT>(F) expands to F(0) F(1) … F(n − 1): loops over lights and
-// volumes unrolled by the preprocessor, so that every index is a constant.
-std::string for_each(const char* what, size_t n) {
-  std::string text = std::string("#define FOR_EACH_") + what + "(F)";
-  for (size_t k = 0; k < n; ++k) text += " F(" + std::to_string(k) + ")";
-  return text + "\n";
-}
-
-// Σ_k weight_k · phase_lobe(type_k, g_k, c) over lobes [first, first + count),
-// each type a constant: the phase function a medium has, and nothing else.
-std::string phase_expression(const std::vector<SceneLobe>& lobes, int first, int count) {
-  std::string text = "(0.0";
-  for (int k = first; k < first + count; ++k)
-    text += " + LOBE(" + std::to_string(k) + ").weight * phase_lobe(" + std::to_string(lobes[k].type) + ", LOBE(" +
-            std::to_string(k) + ").g, c)";
-  return text + ")";
-}
-
-bool grey(const glm::vec3& c) { return c.r == c.g && c.g == c.b; }
-
-std::string structure_defines(const std::vector<SceneLight>& lights, const std::vector<SceneVolume>& volumes,
-                              const std::vector<SceneLobe>& lobes, int medium_lobes, const FrameInputs& in) {
-  std::vector<int> types, shadows;
-  std::vector<bool> gobos, beams, edges;
-  for (const SceneLight& l : lights) {
-    types.push_back(l.type);
-    edges.push_back(l.edge > 0.0f);
-    shadows.push_back(l.shadow_kind);
-    gobos.push_back(l.gobo_layer >= 0);
-    beams.push_back(l.beam_length > 0.0f);
-  }
-  bool grey_media = grey(in.medium.sigma_s) && grey(in.medium.sigma_t());
-  for (const SceneVolume& v : volumes) grey_media = grey_media && grey(v.sigma_s) && grey(v.sigma_t);
-  std::string d;
-  d += "#define LIGHT_COUNT " + std::to_string(lights.size()) + "\n";
-  d += "#define VOLUME_COUNT " + std::to_string(volumes.size()) + "\n";
-  d += "#define LOBE_COUNT " + std::to_string(lobes.size()) + "\n";
-  d += "#define LIGHT_MODEL_TYPE " + std::to_string(static_cast<int>(in.light_model.type)) + "\n";
-  d += std::string("#define GREY_MEDIA ") + (grey_media ? "1" : "0") + "\n";
-  d += "#define LIGHT_TYPES " + glsl_array("int", types) + "\n";
-  d += "#define LIGHT_SHADOWS " + glsl_array("int", shadows) + "\n";
-  d += "#define LIGHT_GOBOS " + glsl_array("bool", gobos) + "\n";
-  d += "#define LIGHT_BEAMS " + glsl_array("bool", beams) + "\n";
-  d += "#define LIGHT_EDGES " + glsl_array("bool", edges) + "\n";
-  d += for_each("LIGHT", lights.size()) + for_each("VOLUME", volumes.size()) + for_each("LOBE", lobes.size());
-  d += "#define MEDIUM_PHASE(c) " + phase_expression(lobes, 0, medium_lobes) + "\n";
-  bool isotropic = true;
-  for (int k = 0; k < medium_lobes; ++k) isotropic = isotropic && lobes[k].type == static_cast<int>(PhaseType::isotropic);
-  d += std::string("#define MEDIUM_ISOTROPIC ") + (isotropic ? "1" : "0") + "\n";
-  std::string volume_phase = "0.0";  // VOLUME_PHASE(v, c): a chain of constant conditions that folds
-  for (size_t v = volumes.size(); v-- > 0;)
-    volume_phase = "((v) == " + std::to_string(v) + " ? " +
-                   phase_expression(lobes, volumes[v].first_lobe, volumes[v].lobe_count) + " : " + volume_phase + ")";
-  d += "#define VOLUME_PHASE(v, c) " + volume_phase + "\n";
-  return d;
 }
 
 // ---- checks of a frame's inputs against the prepared scene (before any GL work) ----
@@ -440,7 +230,7 @@ void SceneFrame::upload_inputs(const FrameSettings& settings, const EngineFrame*
     const glm::mat4 model = inputs_.transforms.empty() ? glm::mat4(1.0f) : inputs_.transforms[m];
     objects.push_back({model, glm::transpose(glm::inverse(model))});
   }
-  objects_ = storage(objects);
+  update(objects_, objects);
   const Media media = upload_medium();
   const std::vector<SceneLight> lights = upload_lights(engine, settings.shadow_resolution, shadows);
   defines_ = binding_defines() + structure_defines(lights, media.volumes, media.lobes,
@@ -462,8 +252,8 @@ SceneFrame::Media SceneFrame::upload_medium() {
     const int first = append(v.phase);
     volumes.push_back({v.min, first, v.max, static_cast<int>(v.phase.lobes.size()), v.sigma_s, 0.0f, v.sigma_t(), 0.0f});
   }
-  lobes_ = storage(lobes);
-  volumes_ = storage(volumes);
+  update(lobes_, lobes);
+  update(volumes_, volumes);
   return {std::move(lobes), std::move(volumes)};
 }
 
@@ -500,7 +290,7 @@ std::vector<SceneLight> SceneFrame::upload_lights(const EngineFrame* engine, int
     }
     records.push_back(g);
   }
-  lights_ = storage(records);
+  update(lights_, records);
   if (!(layout == shadow_layout_) || resolution != shadow_resolution_) allocate_shadow_maps(layout, resolution);
   return records;
 }
@@ -599,7 +389,6 @@ void SceneFrame::update_frame_block(const FrameSettings& settings) {
   b.light_count = light_count();
   b.volume_count = static_cast<int>(scene_.volumes.size());
   b.medium_lobes = static_cast<int>(inputs_.medium.phase.lobes.size());
-  b.object_count = static_cast<int>(scene_.meshes.size());
   glNamedBufferSubData(frame_block_.id(), 0, sizeof(b), &b);
 }
 

@@ -13,6 +13,7 @@
 #include "gpu/gl.hpp"
 #include "gpu/timer.hpp"
 #include "methods/kit/frame_data.hpp"
+#include "methods/kit/shadow_projection.hpp"
 
 #include <airlight/engine.hpp>
 #include <airlight/image.hpp>
@@ -63,11 +64,6 @@ struct FrameSettings {
   float shadow_bias = 1.0f;      // in shadow-map texels at the point (see scene.glsl)
 };
 
-// Half-angle from which a spot light gets a cube map instead of a 2D map: a 2D
-// map of field 2·cone has texels tan(cone) times coarser at its centre than a cube
-// face (90°); at 60° that is 1.7×, and it diverges toward 90°.
-inline constexpr float wide_spot_deg = 60.0f;
-
 class SceneFrame {
 public:
   // Uploads what the scene fixes; needs a current GL context. Gobos of
@@ -101,9 +97,8 @@ public:
   // nothing; changing the structure compiles each program once more.
   const std::string& defines() const { return defines_; }
 
-  // This frame's inputs and the scene as it was prepared.
+  // This frame's inputs.
   const FrameInputs& inputs() const { return inputs_; }
-  const Scene& scene() const { return scene_; }
   int width() const { return inputs_.width; }
   int height() const { return inputs_.height; }
   int light_count() const { return static_cast<int>(inputs_.lights.size()); }
@@ -153,7 +148,7 @@ private:
   std::vector<ShadowDraw> shadow_draws_;
   ShadowLayout shadow_layout_;
   std::vector<const Image*> gobo_images_;  // per gobo layer
-  std::vector<std::pair<glm::dvec3, glm::dvec3>> mesh_bounds_;  // per mesh: object-space lo, hi
+  std::vector<Bounds> mesh_bounds_;  // per mesh, in object space
   int index_count_ = 0, shadow_resolution_ = 0;
 
   VertexArray vertex_array_;

@@ -32,6 +32,7 @@ TEST(EquiangularSteps, IntegrateInverseSquareExactly) {
         EXPECT_LE(t.x, b + 1e-9 * b);
         sum += t.y / (s.h * s.h + (t.x - s.foot) * (t.x - s.foot));  // w/r² with r² from the foot point
       }
+      // Exact but for double rounding in tan, the weights and n additions.
       EXPECT_NEAR(sum, (s.theta_b - s.theta_a) / s.h, 1e-12 * sum) << "case " << c << " n " << n;
     }
   }
