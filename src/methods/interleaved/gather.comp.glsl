@@ -26,15 +26,31 @@
 // that change exactly, so what the window shares is only the smooth remainder
 // (σs·p, V, extinction). Neighbours whose rays no light reaches (G = 0, w = 0)
 // are left out like those across silhouettes.
-// Specialized by GatherPass: BLOCK (M), VERTICAL, DEPTH_AWARE and NORMALIZED,
-// so that each pass's loops have constant trip counts and the horizontal pass
-// carries no light guide.
+// Guarded (GUARD = k > 0, not in Tóth): a pixel beside a light's image
+// marched all N samples itself (march.comp.glsl, w = 2); it is left out of
+// every window and keeps its own estimate. For the others the vertical pass clamps the gathered
+// value, per channel, to P ± k·SE, where P = M²·(own partial sum) is the
+// pixel's own estimate of L_air from its N/M² samples and SE its standard
+// error by systematic sampling's successive-difference estimator,
+// SE² = M⁴·n/(2(n − 1))·Σ(y_k − y_{k−1})² (march.glsl). Where the window's rays
+// differ by more than the pixel's own uncertainty — a lamp's image, a shadow
+// edge — the pixel keeps its own march; elsewhere the gather's smoothing
+// stands. SE falls as N grows, so the result converges to the pixel's own
+// march, i.e. to raymarch, whatever the gather's bias.
+// Specialized by GatherPass: BLOCK (M), VERTICAL, DEPTH_AWARE, NORMALIZED and
+// GUARD, so that each pass's loops have constant trip counts and the
+// horizontal pass carries no light guide.
 #include "methods/kit/march.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+#ifdef VERTICAL
+layout(rgba32f, binding = 0) uniform image2D gathered;  // holds this pixel's own partial sum until written
+#else
 layout(rgba32f, binding = 0) uniform writeonly image2D gathered;
+#endif
 layout(binding = BINDING_PARTIAL) uniform sampler2D partial_sums;
 layout(binding = BINDING_GUIDE) uniform sampler2D guides;  // the march's light guide per pixel (normalized)
+layout(binding = BINDING_SPREAD) uniform sampler2D spreads;  // the march's Σ(y_k − y_{k−1})² and n (guard)
 
 uniform float depth_threshold;  // relative to this pixel's distance
 
@@ -57,7 +73,7 @@ void fetch_neighbourhood(ivec2 pixel, int along, int size, float distance) {
     ivec2 neighbour = pixel + (clamp(s, 0, size - 1) - along) * axis;
     vec4 p = texelFetch(partial_sums, neighbour, 0);
     partial[j] = p.rgb;
-    joined[j] = s >= 0 && s < size && p.w != 0.0;
+    joined[j] = s >= 0 && s < size && p.w == 1.0;  // w = 0: no light reaches; 2: keeps its own march (guard)
 #ifdef DEPTH_AWARE
     joined[j] = joined[j] && (j == BLOCK - 1 ||
                               abs(surface_distance(neighbour) - distance) <= depth_threshold * distance);
@@ -91,6 +107,25 @@ int window_start(int along, int size) {
 #endif
 }
 
+#if defined(VERTICAL) && defined(GUARD)
+// The gathered value clamped to the pixel's own estimate ± GUARD standard
+// errors (see the top). Below 8 own samples the spread is not trusted and the
+// gather stands: with 4, a pixel whose samples all fall on a gobo's dark cells
+// has a spread of 0 and would be clamped to black (docs/decisions.md).
+const float MIN_N = 8.0;
+vec3 guarded(vec3 value, ivec2 pixel, vec3 guide) {
+  const float blocks = float(BLOCK * BLOCK);
+  vec4 partial = imageLoad(gathered, pixel);
+  vec3 own = blocks * partial.rgb * guide;
+  if (partial.w == 2.0) return own;  // beside a light's image: all N samples its own (march.comp.glsl)
+  vec4 spread = texelFetch(spreads, pixel, 0);
+  float n = spread.w;
+  if (n < MIN_N) return value;
+  vec3 error = blocks * sqrt(spread.rgb * (n / (2.0 * (n - 1.0))));
+  return clamp(value, own - GUARD * error, own + GUARD * error);
+}
+#endif
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, frame_size()))) return;
@@ -107,8 +142,16 @@ void main() {
     count += in_window ? 1 : 0;
   }
   if (count > 0) sum *= float(BLOCK) / float(count);
-#if defined(VERTICAL) && defined(NORMALIZED)
-  sum *= texelFetch(guides, pixel, 0).rgb;
+#ifdef VERTICAL
+#ifdef NORMALIZED
+  vec3 guide = texelFetch(guides, pixel, 0).rgb;
+#else
+  vec3 guide = vec3(1.0);
+#endif
+  sum *= guide;
+#ifdef GUARD
+  sum = guarded(sum, pixel, guide);
+#endif
 #endif
   imageStore(gathered, pixel, vec4(sum, count > 0 ? 1.0 : 0.0));
 }

@@ -12,6 +12,7 @@ struct GatherSettings {
   bool depth_aware = true;
   float depth_threshold = 0.1f;  // relative distance difference that excludes a neighbour
   bool normalized = false;       // partial sums come divided by the light guide (kit::MarchSettings)
+  float guard = 0.0f;            // k: clamp to the own estimate ± k standard errors (0: no guard)
 };
 
 class GatherPass {
@@ -19,9 +20,11 @@ public:
   explicit GatherPass(GatherSettings settings) : settings_(settings) {}
 
   // Replaces each pixel of `image` (RGBA32F of the frame's size) by the sum over
-  // its M×M window, times the pixel's light guide from `guide` when normalized;
-  // the frame must be bound (SceneFrame::bind).
-  void run(const kit::SceneFrame& frame, const gpu::Texture& image, const gpu::Texture& guide);
+  // its M×M window, times the pixel's light guide from `guide` when normalized,
+  // clamped by the march's `spread` when guarded; the frame must be bound
+  // (SceneFrame::bind).
+  void run(const kit::SceneFrame& frame, const gpu::Texture& image, const gpu::Texture& guide,
+           const gpu::Texture& spread);
 
 private:
   void pass(const kit::SceneFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical);

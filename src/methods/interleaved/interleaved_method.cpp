@@ -15,13 +15,14 @@ class Interleaved final : public kit::GpuMethod {
 public:
   explicit Interleaved(const Settings& s)
       : GpuMethod(s),
-        march_(kit::MarchSettings::from(s, s.integer("block"), normalized(s))),
+        march_(kit::MarchSettings::from(s, s.integer("block"), normalized(s), guarded(s))),
         gather_({s.integer("block"), s.boolean("depth_aware"), static_cast<float>(s.real("depth_threshold")),
-                 normalized(s)}) {}
+                 normalized(s), guarded(s) ? static_cast<float>(s.real("guard")) : 0.0f}) {}
 
 private:
   enum class Gather { sum, normalized };  // the `gather` setting's choices, in order
   static bool normalized(const Settings& s) { return s.option<Gather>("gather") == Gather::normalized; }
+  static bool guarded(const Settings& s) { return s.real("guard") > 0.0 && s.integer("block") > 1; }
 
   void prepare_airlight(const Scene&) override { march_.prepare(); }
 
@@ -31,7 +32,7 @@ private:
       march_.run(frame, target);
     }
     gpu::ScopedPass pass(timer, "gather");
-    gather_.run(frame, target, march_.guide());
+    gather_.run(frame, target, march_.guide(), march_.spread());
   }
 
   std::vector<std::pair<std::string, double>> stats() const override {
@@ -59,7 +60,11 @@ MethodInfo interleaved_method() {
                "sum = Tóth's sum of the window's partial sums; normalized = each partial sum divided by its "
                "pixel's unshadowed ∫I/r² (exact per light), the sum multiplied by the pixel's own, so that the "
                "1/r² peak next to a light and the cone's edge do not blur (with equiangular steps, N = 64, 13–24× "
-               "less error than sum on teapot_spot, biri_sphere, three_lights)"}});
+               "less error than sum on teapot_spot, biri_sphere, three_lights)"},
+              {"guard", T::real, 2.0, 0.0, 100.0, {},
+               "k: each pixel's gathered value is clamped to its own N/M² samples' estimate ± k standard errors "
+               "(successive differences), so that where the window's rays differ — a lamp's image, a shadow edge — "
+               "the pixel keeps its own march and the error keeps falling as N grows; 0 = Tóth's gather"}});
   return {"interleaved", "Tóth 2009 §4.1",
           "raymarch with the N samples spread over M×M pixel blocks (interleaved sampling, Keller & "
           "Heidrich 2001) and gathered by a separable sum, normalized by each pixel's unshadowed ∫I/r² and "

@@ -62,12 +62,25 @@ bool any_unbounded_sun() {
   return any;
 }
 
+#ifdef SPREAD
+// Σ over the marches of Σ_k (y_k − y_{k−1})², y_k = w_k·Σ V·inscatter the
+// terms of successive samples of one march: the variance estimator of
+// systematic sampling (successive differences measure how rough the integrand
+// is between the samples, not how much it varies along the ray). Interleaved's
+// guard turns it into the standard error of a pixel's own estimate.
+vec3 march_spread = vec3(0.0);
+#endif
+
 // Σ over the range's samples k of w_k·Σ_{lights i in group} V_i·inscatter_i(x_k)
 // (Tóth eq. 1, Kingston eq. 26) on segment s of the ray eye + t·dir.
 vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) {
   if (!(s.b > s.a)) return vec3(0.0);
   vec3 eye = frame.eye;
   vec3 sum = vec3(0.0);
+#ifdef SPREAD
+  vec3 previous = vec3(0.0);
+  bool first = true;
+#endif
   // Runtime bounds: the steps and this pixel's share of them are settings and
   // pixel positions, not the scene's structure.
   for (int k = r.first; k < r.end; k += r.stride) {
@@ -83,6 +96,12 @@ vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) 
     FOR_EACH_LIGHT(ADD_LIGHT_SAMPLE)
 #undef ADD_LIGHT_SAMPLE
     sum += e * t.y;
+#ifdef SPREAD
+    vec3 difference = first ? vec3(0.0) : e * t.y - previous;
+    march_spread += difference * difference;
+    previous = e * t.y;
+    first = false;
+#endif
   }
   return sum;
 }

@@ -11,7 +11,7 @@ namespace {
 
 constexpr GLuint jitter_unit = kit::binding::first_free_texture;
 
-// A pixel's own samples per dispatch; the march takes ceil(N / M² / 64)
+// A pixel's own samples per dispatch; the march takes ceil(N / M² / that)
 // dispatches, accumulating in the target. llvmpipe ends an invocation's loops
 // after 65535 iterations counted over all its loops (gallivm
 // LP_MAX_TGSI_LOOP_ITERATIONS), silently: with the per-light, per-lobe and
@@ -19,8 +19,9 @@ constexpr GLuint jitter_unit = kit::binding::first_free_texture;
 // the rays. 64 samples leave ~1000 inner iterations per sample, and keep each
 // dispatch short for GPU watchdogs too. (Equiangular sampling marches each
 // point or spot light separately: each sample index still evaluates each light
-// once.)
-constexpr int samples_per_dispatch = 64;
+// once.) With interleaved's guard, a pixel beside a light's image marches every
+// index of the dispatch's M² strides, so a dispatch spans at most 1024 indices.
+int samples_per_dispatch(int block) { return std::max(1, std::min(64, 1024 / (block * block))); }
 
 const std::vector<std::string> samplings{"uniform", "equiangular"};  // in Sampling's order
 
@@ -40,8 +41,8 @@ std::vector<SettingSpec> march_settings() {
            "peak near a light is integrated exactly; uniform = even steps in distance (the documents')"}};
 }
 
-MarchSettings MarchSettings::from(const Settings& s, int block, bool normalized) {
-  return {s.integer("steps"), s.option<Jitter>("jitter"), s.option<Sampling>("sampling"), block, normalized};
+MarchSettings MarchSettings::from(const Settings& s, int block, bool normalized, bool guard) {
+  return {s.integer("steps"), s.option<Jitter>("jitter"), s.option<Sampling>("sampling"), block, normalized, guard};
 }
 
 void MarchPass::prepare() {
@@ -56,6 +57,7 @@ std::string MarchPass::defines() const {
   d += "#define SAMPLING " + std::to_string(static_cast<int>(settings_.sampling)) + "\n";
   if (settings_.jitter != Jitter::none) d += "#define JITTER\n";
   if (settings_.normalized) d += "#define NORMALIZED\n";
+  if (settings_.guard) d += "#define GUARD\n";
   return d;
 }
 
@@ -68,17 +70,18 @@ void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   gpu::set_uniform(program, "block", settings_.block);
   glBindTextureUnit(jitter_unit, noise_.id());
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  if (settings_.normalized) {
-    if (frame.width() != width_ || frame.height() != height_) {
-      guide_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, frame.width(), frame.height());
-      width_ = frame.width();
-      height_ = frame.height();
-    }
-    glBindImageTexture(1, guide_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  if (frame.width() != width_ || frame.height() != height_) {
+    width_ = frame.width();
+    height_ = frame.height();
+    if (settings_.normalized) guide_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
+    if (settings_.guard) spread_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
   }
-  for (int first = 0; first < own_samples; first += samples_per_dispatch) {
+  if (settings_.normalized) glBindImageTexture(1, guide_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  if (settings_.guard) glBindImageTexture(2, spread_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  const int per_dispatch = samples_per_dispatch(settings_.block);
+  for (int first = 0; first < own_samples; first += per_dispatch) {
     gpu::set_uniform(program, "first_sample", first);
-    gpu::set_uniform(program, "sample_count", std::min(samples_per_dispatch, own_samples - first));
+    gpu::set_uniform(program, "sample_count", std::min(per_dispatch, own_samples - first));
     gpu::dispatch_pixels(frame.width(), frame.height());
   }
   light_samples_ = static_cast<double>(frame.width()) * frame.height() * settings_.steps / stride * frame.light_count();

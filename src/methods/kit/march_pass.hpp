@@ -22,9 +22,10 @@ struct MarchSettings {
   Sampling sampling = Sampling::equiangular;
   int block = 1;                      // M: pixel q marches the samples k ≡ q (mod M²)
   bool normalized = false;            // divide each pixel's sum by its light guide (march.glsl)
+  bool guard = false;                 // interleaved's guard: each pixel's spread, lamps' pixels kept (march.comp.glsl)
 
   // From the method's settings (those of march_settings()), with block M.
-  static MarchSettings from(const Settings& settings, int block = 1, bool normalized = false);
+  static MarchSettings from(const Settings& settings, int block = 1, bool normalized = false, bool guard = false);
 };
 
 class MarchPass {
@@ -43,6 +44,10 @@ public:
   // With `normalized`: each pixel's light guide from the last run (RGBA32F, rgb).
   const gpu::Texture& guide() const { return guide_; }
 
+  // With `guard`: per pixel Σ of squared successive differences (rgb) and its
+  // own sample count (w) from the last run (RGBA32F).
+  const gpu::Texture& spread() const { return spread_; }
+
   // Light samples evaluated by the last run (pixels × samples per pixel × lights).
   double light_samples() const { return light_samples_; }
 
@@ -52,6 +57,7 @@ private:
   MarchSettings settings_;
   gpu::Texture noise_;
   gpu::Texture guide_;
+  gpu::Texture spread_;
   int width_ = 0, height_ = 0;
   double light_samples_ = 0.0;
 };
