@@ -91,6 +91,7 @@ struct Mesh {
   std::vector<glm::vec3> normals;    // per vertex, unit; same size as positions
   std::vector<glm::uvec3> triangles; // indices into positions
   Color albedo{0.7f};
+  bool casts_shadows = true;         // false: light passes through it (it still ends view rays)
 };
 
 struct Scene {
@@ -114,6 +115,8 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
 // Built-in scenes (docs/design.md §4). Throws InputError for an unknown name.
 Scene builtin_scene(const std::string& name);
 std::vector<std::string> builtin_scene_names();
+// One line on what a built-in scene shows and which document it comes from.
+std::string builtin_scene_description(const std::string& name);
 // The scene `scripts/demo` renders.
 inline constexpr const char* default_builtin = "teapot_spot";
 

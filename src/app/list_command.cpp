@@ -23,7 +23,7 @@ Run add_list_command(CLI::App& cli) {
   command->add_option("what", *what, "methods | scenes")->required()->check(CLI::IsMember({"methods", "scenes"}));
   return [what] {
     if (*what == "methods") return list_methods();
-    for (const auto& name : builtin_scene_names()) std::cout << name << "\n";
+    for (const auto& name : builtin_scene_names()) std::cout << name << "\t" << builtin_scene_description(name) << "\n";
   };
 }
 

@@ -130,6 +130,10 @@ void set_uniform(const Program& p, const char* name, const std::vector<glm::vec4
   if (!v.empty()) glProgramUniform4fv(p.id(), location(p, name), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
 }
 
+void set_uniform(const Program& p, const char* name, const std::vector<int>& v) {
+  if (!v.empty()) glProgramUniform1iv(p.id(), location(p, name), static_cast<GLsizei>(v.size()), v.data());
+}
+
 namespace {
 std::map<std::string, Program>& program_cache() {
   static auto* cache = new std::map<std::string, Program>;  // never destroyed, as the context

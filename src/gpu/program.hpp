@@ -46,8 +46,9 @@ void set_uniform(const Program& p, const char* name, const glm::vec2& v);
 void set_uniform(const Program& p, const char* name, const glm::vec3& v);
 void set_uniform(const Program& p, const char* name, const glm::vec4& v);
 void set_uniform(const Program& p, const char* name, const glm::mat4& v);
-// A vec4 array uniform, elements 0 .. v.size() − 1.
+// Array uniforms, elements 0 .. v.size() − 1.
 void set_uniform(const Program& p, const char* name, const std::vector<glm::vec4>& v);
+void set_uniform(const Program& p, const char* name, const std::vector<int>& v);
 
 // local_size_x = local_size_y of every per-pixel compute program.
 inline constexpr int pixel_workgroup = 8;

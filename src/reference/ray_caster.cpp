@@ -1,6 +1,7 @@
 #include "reference/ray_caster.hpp"
 
 #include <airlight/error.hpp>
+#include <algorithm>
 #include <cmath>
 #include <embree3/rtcore.h>
 #include <glm/geometric.hpp>
@@ -93,6 +94,8 @@ struct RayCaster::Embree {
   std::unique_ptr<ErrorLog> log = std::make_unique<ErrorLog>();  // outlives the device
   DevicePtr device;
   ScenePtr scene;
+  ScenePtr casters;  // the meshes that cast shadows, when some do not (Mesh::casts_shadows)
+  RTCScene shadow_scene() const { return casters ? casters.get() : scene.get(); }
 };
 
 namespace {
@@ -116,21 +119,34 @@ void attach_mesh(RTCDevice device, ErrorLog& log, RTCScene scene, const Mesh& me
 
 }  // namespace
 
+namespace {
+
+// An Embree scene of the meshes `include` accepts, geometry id = mesh index.
+template <typename Include>
+ScenePtr build_scene(RTCDevice device, ErrorLog& log, const Scene& scene, Include include) {
+  ScenePtr built(rtcNewScene(device));
+  log.check(device, "new scene");
+  rtcSetSceneFlags(built.get(), RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(built.get(), RTC_BUILD_QUALITY_HIGH);
+  for (size_t id = 0; id < scene.meshes.size(); ++id)
+    if (!scene.meshes[id].triangles.empty() && include(scene.meshes[id]))
+      attach_mesh(device, log, built.get(), scene.meshes[id], static_cast<unsigned>(id));
+  rtcCommitScene(built.get());
+  log.check(device, "scene build");
+  return built;
+}
+
+}  // namespace
+
 RayCaster::RayCaster(const Scene& scene) : embree_(std::make_unique<Embree>()) {
   Embree& e = *embree_;
   e.device.reset(rtcNewDevice(nullptr));
   if (!e.device)
     throw Failure(std::string("Embree: cannot create a device: ") + error_name(rtcGetDeviceError(nullptr)));
   rtcSetDeviceErrorFunction(e.device.get(), &ErrorLog::record, e.log.get());
-  e.scene.reset(rtcNewScene(e.device.get()));
-  e.log->check(e.device.get(), "new scene");
-  rtcSetSceneFlags(e.scene.get(), RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(e.scene.get(), RTC_BUILD_QUALITY_HIGH);
-  for (size_t id = 0; id < scene.meshes.size(); ++id)
-    if (!scene.meshes[id].triangles.empty())
-      attach_mesh(e.device.get(), *e.log, e.scene.get(), scene.meshes[id], static_cast<unsigned>(id));
-  rtcCommitScene(e.scene.get());
-  e.log->check(e.device.get(), "scene build");
+  e.scene = build_scene(e.device.get(), *e.log, scene, [](const Mesh&) { return true; });
+  if (std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.casts_shadows; }))
+    e.casters = build_scene(e.device.get(), *e.log, scene, [](const Mesh& m) { return m.casts_shadows; });
 }
 
 RayCaster::~RayCaster() = default;
@@ -157,7 +173,7 @@ bool RayCaster::occluded(const glm::dvec3& origin, const glm::dvec3& dir, double
   rtcInitIntersectContext(&context);
   RTCRay query{};
   set_ray(query, origin, dir, t_near, t_far);
-  rtcOccluded1(embree_->scene.get(), &context, &query);
+  rtcOccluded1(embree_->shadow_scene(), &context, &query);
   return query.tfar < 0.0f;  // Embree sets tfar = -inf when the ray is blocked
 }
 

@@ -30,7 +30,8 @@ public:
 
   // The nearest surface with t in [t_near, t_far], if any.
   std::optional<Hit> intersect(const optics::Ray& ray, double t_near, double t_far) const;
-  // Is any surface in [t_near, t_far] along the unit direction `dir` from `origin`?
+  // Is any shadow-casting surface (Mesh::casts_shadows) in [t_near, t_far]
+  // along the unit direction `dir` from `origin`?
   bool occluded(const glm::dvec3& origin, const glm::dvec3& dir, double t_near, double t_far) const;
 
 private:

@@ -52,9 +52,26 @@ TEST(BuiltinScenes, EveryBuiltinLoadsWithValidData) {
 
 TEST(BuiltinScenes, IncludeTheDocumentsScenes) {
   const auto names = builtin_scene_names();
-  for (const char* name : {"teapot_spot", "stage", "stained_glass", "biri_sphere", "nilsson_toplight",
-                           default_builtin})
+  for (const char* name : {"teapot_spot", "stage", "stained_glass", "biri_sphere", "biri_pens", "biri_media",
+                           "nilsson_toplight", default_builtin})
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+}
+
+TEST(BuiltinScenes, EachHasADescription) {
+  for (const std::string& name : builtin_scene_names()) EXPECT_GT(builtin_scene_description(name).size(), 20u) << name;
+  EXPECT_TRUE(throws_input_error([] { builtin_scene_description("nope"); }, "<builtin>", "nope"));
+}
+
+// Biri Fig. 7b: three bounded media of their own colour, each scattering one
+// channel most.
+TEST(BuiltinScenes, BiriMediaHasRedGreenAndBlueVolumes) {
+  const Scene scene = builtin_scene("biri_media");
+  ASSERT_EQ(scene.volumes.size(), 3u);
+  for (int c = 0; c < 3; ++c) {
+    const Color s = scene.volumes[c].sigma_s;
+    EXPECT_GT(s[c], 5.0f * s[(c + 1) % 3]) << c;
+    EXPECT_GT(s[c], 5.0f * s[(c + 2) % 3]) << c;
+  }
 }
 
 TEST(BuiltinScenes, ToplightUsesNilssonsSimplifiedModel) {

@@ -142,6 +142,11 @@ std::string JsonNode::string() const {
   return value_->get<std::string>();
 }
 
+bool JsonNode::boolean() const {
+  if (!value_->is_boolean()) fail(std::string("must be true or false, not ") + value_->type_name());
+  return value_->get<bool>();
+}
+
 std::vector<JsonNode> JsonNode::elements() const {
   if (!value_->is_array()) fail(std::string("must be an array, not ") + value_->type_name());
   std::vector<JsonNode> result;
@@ -239,6 +244,11 @@ Color JsonObject::color_or(std::string_view name, const Interval& allowed, Color
 int JsonObject::integer_or(std::string_view name, int lo, int hi, int fallback) {
   const auto node = optional(name);
   return node ? node->integer(lo, hi) : fallback;
+}
+
+bool JsonObject::boolean_or(std::string_view name, bool fallback) {
+  const auto node = optional(name);
+  return node ? node->boolean() : fallback;
 }
 
 }  // namespace airlight::scene_json

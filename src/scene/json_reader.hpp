@@ -52,6 +52,7 @@ public:
   float number(const Interval& allowed = any_number()) const;  // finite as a float
   int integer(int lo, int hi) const;
   std::string string() const;
+  bool boolean() const;
   glm::vec2 vec2(const Interval& allowed = any_number()) const;
   glm::vec3 vec3(const Interval& allowed = any_number()) const;
   glm::vec3 direction() const;                        // non-zero, returned normalized
@@ -89,6 +90,7 @@ public:
   glm::vec3 vec3_or(std::string_view name, glm::vec3 fallback);
   Color color_or(std::string_view name, const Interval& allowed, Color fallback);
   int integer_or(std::string_view name, int lo, int hi, int fallback);
+  bool boolean_or(std::string_view name, bool fallback);
 
 private:
   JsonNode node_;

@@ -1,6 +1,7 @@
 // "objects" entries (docs/design.md §4). Every object has the optional keys
 //   translate [x,y,z], rotate_deg [rx,ry,rz] (about world X, then Y, then Z),
-//   scale s (> 0, uniform), albedo (colour in [0,1], default 0.7), name;
+//   scale s (> 0, uniform), albedo (colour in [0,1], default 0.7), name,
+//   casts_shadows (true or false, default true: whether it shadows the lights);
 // and either "mesh": "file.obj" or "shape" with the shape's keys:
 //   box       min, max
 //   sphere    radius; center [0,0,0]; segments 48 (around; segments/2 rings)
@@ -95,6 +96,7 @@ Mesh read_object(const JsonNode& node, const std::filesystem::path& base_dir) {
   Mesh mesh = o.has("shape") ? read_shape(o) : read_mesh_file(o, base_dir);
   const Transform transform = read_transform(o);
   mesh.albedo = o.color_or("albedo", closed(0, 1), mesh.albedo);
+  mesh.casts_shadows = o.boolean_or("casts_shadows", true);
   const auto name = o.optional("name");
   const std::string label = name ? name->string() : mesh.name;
   o.finish();

@@ -102,6 +102,7 @@ TEST(SceneJson, ObjectsBecomePlacedMeshes) {
   expect_vec(s.meshes[0].albedo, glm::vec3(0.5f));
   expect_vec(s.meshes[1].albedo, glm::vec3(0.7f));  // the default
   expect_vec(s.meshes[5].albedo, {0.6f, 0.6f, 0.5f});
+  EXPECT_TRUE(s.meshes[0].casts_shadows);  // the default
   // Teapot at scale 2: 2 units tall.
   float top = 0.0f;
   for (const glm::vec3& p : s.meshes[0].positions) top = std::max(top, p.y);
@@ -111,6 +112,14 @@ TEST(SceneJson, ObjectsBecomePlacedMeshes) {
   // The plane faces +z at z = -3.
   for (const glm::vec3& p : s.meshes[3].positions) EXPECT_FLOAT_EQ(p.z, -3.0f);
   for (const glm::vec3& n : s.meshes[3].normals) expect_vec(n, {0, 0, 1});
+}
+
+TEST(SceneJson, AnObjectMayCastNoShadow) {
+  Json j = valid_scene();
+  j["objects"][1]["casts_shadows"] = false;
+  const Scene s = parse(j);
+  EXPECT_FALSE(s.meshes[1].casts_shadows);
+  EXPECT_TRUE(s.meshes[2].casts_shadows);
 }
 
 TEST(SceneJson, MinimalSceneTakesTheDefaults) {
@@ -359,6 +368,7 @@ const BadCase kOutOfRange[] = {
     {"ScaleZero", "/objects/0/scale", "0", "objects[0].scale"},
     {"ScaleNegative", "/objects/0/scale", "-2", "objects[0].scale"},
     {"AlbedoAboveOne", "/objects/0/albedo", "1.5", "objects[0].albedo"},
+    {"CastsShadowsNotBoolean", "/objects/1/casts_shadows", "1", "objects[1].casts_shadows"},
     {"AlbedoChannelNegative", "/objects/5/albedo/1", "-0.1", "objects[5].albedo[1]"},
     {"PlaneSizeZero", "/objects/3/size/0", "0", "objects[3].size[0]"},
     {"ScaleOverflowsGeometry", "/objects/2/scale", "1e38", "objects[2]"},

@@ -87,7 +87,9 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
   if (engine) check_engine(*engine, inputs);
   gpu::SavedState state;
   PassTimer timer;
-  frame_.render(inputs, frame_settings_, engine, {uses_shadow_maps(), inputs.surface && !engine}, timer);
+  // Shadow maps for the method, or for the surface term (its lights are shadowed whatever the method).
+  const bool surface = inputs.surface && !engine;
+  frame_.render(inputs, frame_settings_, engine, {uses_shadow_maps() || surface, surface}, timer);
   if (inputs.width != width_ || inputs.height != height_) {
     airlight_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, inputs.width, inputs.height);
     width_ = inputs.width;

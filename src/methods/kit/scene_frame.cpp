@@ -171,21 +171,30 @@ void SceneFrame::upload_meshes(const Scene& scene) {
   std::vector<GLuint> indices;
   std::vector<glm::vec4> face_normals;
   mesh_bounds_.clear();
+  std::vector<GLuint> bases;
+  caster_index_count_ = 0;
   for (const Mesh& mesh : scene.meshes) {
-    const auto base = static_cast<GLuint>(vertices.size());
+    bases.push_back(static_cast<GLuint>(vertices.size()));
     const auto object = static_cast<GLint>(mesh_bounds_.size());
     const bool normals = mesh.normals.size() == mesh.positions.size();
     for (size_t v = 0; v < mesh.positions.size(); ++v)
       vertices.push_back({mesh.positions[v], normals ? mesh.normals[v] : glm::vec3(0.0f), mesh.albedo, object});
-    for (const glm::uvec3& t : mesh.triangles) {
-      indices.insert(indices.end(), {base + t.x, base + t.y, base + t.z});
-      const glm::dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
-      const glm::dvec3 n = glm::cross(b - a, c - a);
-      const double length = glm::length(n);
-      face_normals.emplace_back(glm::vec3(length > 0.0 ? n / length : n), 0.0f);
-    }
     mesh_bounds_.push_back(mesh_bounds(mesh));
   }
+  // The shadow casters' triangles first, so that the shadow maps draw them alone.
+  for (const bool casters : {true, false})
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+      const Mesh& mesh = scene.meshes[m];
+      if (mesh.casts_shadows != casters) continue;
+      for (const glm::uvec3& t : mesh.triangles) {
+        indices.insert(indices.end(), {bases[m] + t.x, bases[m] + t.y, bases[m] + t.z});
+        const glm::dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        const double length = glm::length(n);
+        face_normals.emplace_back(glm::vec3(length > 0.0 ? n / length : n), 0.0f);
+      }
+      if (casters) caster_index_count_ = static_cast<int>(indices.size());
+    }
   index_count_ = static_cast<int>(indices.size());
   vertices_ = storage(vertices);
   indices_ = storage(indices);
@@ -486,7 +495,7 @@ void SceneFrame::draw_shadow_layer(const ShadowDraw& d) {
   set_uniform(program, "light_index", d.light);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+  glDrawElements(GL_TRIANGLES, caster_index_count_, GL_UNSIGNED_INT, nullptr);
   glDisable(GL_DEPTH_TEST);
 }
 

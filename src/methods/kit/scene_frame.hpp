@@ -149,7 +149,7 @@ private:
   ShadowLayout shadow_layout_;
   std::vector<const Image*> gobo_images_;  // per gobo layer
   std::vector<Bounds> mesh_bounds_;  // per mesh, in object space
-  int index_count_ = 0, shadow_resolution_ = 0;
+  int index_count_ = 0, caster_index_count_ = 0, shadow_resolution_ = 0;
 
   VertexArray vertex_array_;
   Buffer vertices_, indices_, face_normals_, objects_;
