@@ -13,6 +13,7 @@
 namespace airlight {
 namespace {
 
+using scene_test::closed_after_welding;
 using scene_test::finite;
 using scene_test::throws_input_error;
 using scene_test::well_formed;
@@ -46,7 +47,10 @@ TEST(BuiltinScenes, EveryBuiltinLoadsWithValidData) {
     ASSERT_FALSE(scene.lights.empty());
     for (const Light& light : scene.lights) expect_valid_light(light);
     ASSERT_FALSE(scene.meshes.empty());
-    for (const Mesh& mesh : scene.meshes) EXPECT_TRUE(well_formed(mesh));
+    for (const Mesh& mesh : scene.meshes) {
+      EXPECT_TRUE(well_formed(mesh));
+      EXPECT_TRUE(closed_after_welding(mesh));  // shadow volumes count on it (Biri §5.1.1)
+    }
   }
 }
 

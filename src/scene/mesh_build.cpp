@@ -1,12 +1,16 @@
 #include "scene/mesh_build.hpp"
 
+#include <airlight/error.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat4x4.hpp>
+#include <map>
 #include <optional>
+#include <set>
+#include <string>
 #include <unordered_map>
 
 namespace airlight::scene_mesh {
@@ -120,6 +124,67 @@ void weld(Mesh& mesh, float tolerance) {
     if (!is_degenerate(p[w.x], p[w.y], p[w.z])) triangles.push_back(w);
   }
   mesh.triangles = std::move(triangles);
+}
+
+namespace {
+
+// Boundary edges a → b as a's list of b: a triangle runs a → b and none runs b → a.
+std::map<uint32_t, std::vector<uint32_t>> boundary_successors(const Mesh& mesh) {
+  std::set<std::pair<uint32_t, uint32_t>> runs;
+  for (const glm::uvec3& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) runs.emplace(t[k], t[(k + 1) % 3]);
+  std::map<uint32_t, std::vector<uint32_t>> next;
+  for (const auto& [a, b] : runs)
+    if (!runs.contains({b, a})) next[a].push_back(b);
+  return next;
+}
+
+// The boundary's loops, each as its vertices in the order the triangles run them. Each step
+// takes an unused edge leaving the current vertex, so where loops touch they still close.
+std::vector<std::vector<uint32_t>> boundary_loops(const Mesh& mesh) {
+  std::map<uint32_t, std::vector<uint32_t>> next = boundary_successors(mesh);
+  std::vector<std::vector<uint32_t>> loops;
+  for (auto& [start, leaving] : next)
+    while (!leaving.empty()) {
+      std::vector<uint32_t>& loop = loops.emplace_back();
+      for (uint32_t v = start; loop.empty() || v != start;) {
+        const auto it = next.find(v);
+        if (it == next.end() || it->second.empty())
+          throw Failure(mesh.name + ": a boundary edge arrives at a vertex no unused one leaves");
+        loop.push_back(v);
+        v = it->second.back();
+        it->second.pop_back();
+      }
+    }
+  return loops;
+}
+
+void cap(MeshBuilder& b, const std::vector<uint32_t>& loop) {
+  const uint32_t n = static_cast<uint32_t>(loop.size());
+  std::vector<glm::vec3> rim(n);
+  glm::dvec3 centre(0.0), normal(0.0);
+  for (uint32_t k = 0; k < n; ++k) {
+    rim[k] = b.mesh().positions[loop[k]];
+    centre += glm::dvec3(rim[k]) / double(n);
+  }
+  // The fan's triangles (centre, b, a) for each loop edge a → b, their areas summed (Newell).
+  for (uint32_t k = 0; k < n; ++k)
+    normal += glm::cross(glm::dvec3(rim[(k + 1) % n]) - centre, glm::dvec3(rim[k]) - centre);
+  const glm::vec3 flat(glm::normalize(normal));
+  const uint32_t apex = b.vertex(glm::vec3(centre), flat);
+  const uint32_t first = static_cast<uint32_t>(b.mesh().positions.size());
+  for (const glm::vec3& q : rim) b.vertex(q, flat);
+  for (uint32_t k = 0; k < n; ++k) b.triangle(apex, first + (k + 1) % n, first + k);
+}
+
+}  // namespace
+
+void cap_holes(Mesh& mesh) {
+  const std::vector<std::vector<uint32_t>> loops = boundary_loops(mesh);
+  std::string name = mesh.name;
+  MeshBuilder b(std::move(mesh));
+  for (const std::vector<uint32_t>& loop : loops) cap(b, loop);
+  mesh = b.take(std::move(name));
 }
 
 glm::mat3 Transform::rotation() const {

@@ -20,6 +20,8 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
 
 class MeshBuilder {
 public:
+  MeshBuilder() = default;
+  explicit MeshBuilder(Mesh mesh) : mesh_(std::move(mesh)) {}  // to add to a mesh
   uint32_t vertex(const glm::vec3& position, const glm::vec3& normal);
   // Adds the triangle unless it is degenerate (pole collapses in tessellations).
   void triangle(uint32_t a, uint32_t b, uint32_t c);
@@ -35,6 +37,15 @@ private:
 // Merges vertices closer than `tolerance`, averaging their normals, and drops
 // the triangles that collapse. Used to stitch patches into one surface.
 void weld(Mesh& mesh, float tolerance);
+
+// Closes each boundary loop of a welded mesh (one index per position) with a fan from the
+// loop's centroid, run against the loop so that the winding stays consistent (outward for a
+// surface wound outward), with the cap's flat normal. The cap's own vertices repeat the
+// loop's positions, so the result is closed once welded by position. Meant for holes whose
+// rim is star-shaped about its centroid (no fan triangle degenerate), as the teapot's are.
+// A boundary edge is one that a triangle runs and none runs back. Throws airlight::Failure if the boundary edges do
+// not form loops (a vertex where more of them arrive than leave).
+void cap_holes(Mesh& mesh);
 
 // Object placement: scale, then rotate about X, then Y, then Z (world axes,
 // right-handed, degrees), then translate.

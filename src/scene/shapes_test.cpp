@@ -4,30 +4,15 @@
 
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
-#include <map>
-#include <utility>
 
 namespace airlight {
 namespace {
 
 using namespace scene_mesh;
+using scene_test::closed_after_welding;
 using scene_test::misoriented_fraction;
 using scene_test::signed_volume;
 using scene_test::well_formed;
-
-// Edges (by welded position) used by exactly one triangle: none on a closed surface.
-size_t boundary_edges(Mesh mesh) {
-  weld(mesh, 1e-5f);
-  std::map<std::pair<uint32_t, uint32_t>, int> uses;
-  for (const glm::uvec3& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const uint32_t a = t[k], b = t[(k + 1) % 3];
-      ++uses[{std::min(a, b), std::max(a, b)}];
-    }
-  size_t boundary = 0;
-  for (const auto& [edge, count] : uses) boundary += count == 1;
-  return boundary;
-}
 
 TEST(Shapes, BoxIsClosedWithFlatOutwardFaces) {
   const Mesh box = make_box({-1, 0, -2}, {1, 3, 2});
@@ -36,7 +21,7 @@ TEST(Shapes, BoxIsClosedWithFlatOutwardFaces) {
   EXPECT_EQ(box.triangles.size(), 12u);
   EXPECT_EQ(misoriented_fraction(box), 0.0);
   EXPECT_NEAR(signed_volume(box), 2.0 * 3.0 * 4.0, 1e-4);
-  EXPECT_EQ(boundary_edges(box), 0u);
+  EXPECT_TRUE(closed_after_welding(box));  // as the floor slabs and walls of the built-in scenes
 }
 
 TEST(Shapes, SphereIsClosedRoundAndOutward) {
@@ -45,7 +30,7 @@ TEST(Shapes, SphereIsClosedRoundAndOutward) {
   ASSERT_TRUE(well_formed(sphere));
   EXPECT_EQ(sphere.triangles.size(), 2u * 48u * 23u);
   EXPECT_EQ(misoriented_fraction(sphere), 0.0);
-  EXPECT_EQ(boundary_edges(sphere), 0u);
+  EXPECT_TRUE(closed_after_welding(sphere));
   for (size_t i = 0; i < sphere.positions.size(); ++i) {
     EXPECT_NEAR(glm::distance(sphere.positions[i], center), 0.5f, 1e-5f);
     EXPECT_GT(glm::dot(sphere.normals[i], glm::normalize(sphere.positions[i] - center)), 0.9999f);
@@ -67,6 +52,7 @@ TEST(Shapes, PlaneFacesItsNormalWithTheGivenSize) {
   ASSERT_TRUE(well_formed(plane));
   ASSERT_EQ(plane.triangles.size(), 2u);
   EXPECT_EQ(misoriented_fraction(plane), 0.0);
+  EXPECT_FALSE(closed_after_welding(plane));  // one-sided by design
   for (const glm::uvec3& t : plane.triangles) {
     const glm::vec3 n = face_normal(plane.positions[t.x], plane.positions[t.y], plane.positions[t.z]);
     EXPECT_GT(glm::dot(n, normal), 0.9999f);
@@ -91,7 +77,7 @@ TEST(Shapes, CylinderIsClosedAndHasTheRightVolume) {
   const Mesh cylinder = make_cylinder({0, 1, 0}, 0.5f, 2.0f, 64);
   ASSERT_TRUE(well_formed(cylinder));
   EXPECT_EQ(misoriented_fraction(cylinder), 0.0);
-  EXPECT_EQ(boundary_edges(cylinder), 0u);
+  EXPECT_TRUE(closed_after_welding(cylinder));
   const double exact = glm::pi<double>() * 0.25 * 2.0;
   EXPECT_NEAR(signed_volume(cylinder) / exact, 1.0, 0.01);
   for (const glm::vec3& p : cylinder.positions) {
@@ -125,6 +111,27 @@ TEST(Shapes, WeldMergesCoincidentVerticesAndDropsCollapsedTriangles) {
   EXPECT_EQ(mesh.positions.size(), 3u);
   EXPECT_EQ(mesh.triangles.size(), 2u);
   ASSERT_TRUE(well_formed(mesh));
+}
+
+TEST(Shapes, CapHolesClosesEachLoopFacingOut) {
+  // A box without its y faces: a square tube with two square holes.
+  Mesh tube = make_box({-1, 0, -2}, {1, 3, 2});
+  tube.triangles.erase(tube.triangles.begin() + 4, tube.triangles.begin() + 8);
+  weld(tube, 1e-5f);
+  ASSERT_FALSE(closed_after_welding(tube));
+  cap_holes(tube);
+  ASSERT_TRUE(well_formed(tube));
+  EXPECT_TRUE(closed_after_welding(tube));
+  EXPECT_EQ(tube.triangles.size(), 8u + 2u * 4u);  // a fan of 4 per hole
+  EXPECT_EQ(misoriented_fraction(tube), 0.0);
+  EXPECT_NEAR(signed_volume(tube), 2.0 * 3.0 * 4.0, 1e-4);  // as the box's
+  int up = 0, down = 0;
+  for (const glm::vec3& n : tube.normals) {
+    up += n == glm::vec3(0, 1, 0);
+    down += n == glm::vec3(0, -1, 0);
+  }
+  EXPECT_EQ(up, 5);  // each cap's centre and its own copies of the hole's 4 corners
+  EXPECT_EQ(down, 5);
 }
 
 TEST(Shapes, BuilderRefusesDegenerateTriangles) {

@@ -204,8 +204,13 @@ Mesh make_teapot(int segments) {
   MeshBuilder b;
   for (int patch = 0; patch < 32; ++patch) tessellate(control_points(patch), segments, b);
   Mesh mesh = b.take("teapot");
-  // Patches share their edges' control points: stitch them into one surface.
+  // Patches share their edges' control points: stitch them into one surface, so that
+  // seams share vertices (the same float positions).
   weld(mesh, 1e-5f);
+  // The data leaves six holes: the spout's tip; the spout's base and the handle's two ends,
+  // inside the body; the lid's and the rim's edges, either side of the gap between them.
+  // Capped, the teapot is closed, as counting shadow volumes needs (Biri §5.1.1).
+  cap_holes(mesh);
   return mesh;
 }
 

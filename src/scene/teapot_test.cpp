@@ -1,14 +1,13 @@
 #include "scene/shapes.hpp"
 #include "scene/test_support.hpp"
 
-#include <algorithm>
 #include <gtest/gtest.h>
-#include <map>
 
 namespace airlight {
 namespace {
 
 using namespace scene_mesh;
+using scene_test::closed_after_welding;
 using scene_test::misoriented_fraction;
 using scene_test::signed_volume;
 using scene_test::well_formed;
@@ -26,29 +25,13 @@ Bounds bounds(const Mesh& mesh) {
   return b;
 }
 
-// Edge -> how many triangles use it, and with which orientation (+1 for a→b
-// with a < b, −1 for the reverse).
-struct EdgeUse {
-  int count = 0, orientation = 0;
-};
-
-std::map<std::pair<uint32_t, uint32_t>, EdgeUse> edge_uses(const Mesh& mesh) {
-  std::map<std::pair<uint32_t, uint32_t>, EdgeUse> uses;
-  for (const glm::uvec3& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const uint32_t a = t[k], b = t[(k + 1) % 3];
-      EdgeUse& use = uses[{std::min(a, b), std::max(a, b)}];
-      ++use.count;
-      use.orientation += a < b ? 1 : -1;
-    }
-  return uses;
-}
-
 TEST(Teapot, IsWellFormed) {
   const Mesh teapot = make_teapot(8);
   ASSERT_TRUE(well_formed(teapot));
-  // 32 patches of 8×8 quads, less the pole-collapsed triangles of 8 patches.
-  EXPECT_EQ(teapot.triangles.size(), 32u * 128u - 8u * 8u);
+  // 32 patches of 8×8 quads, less the pole-collapsed triangles of 8 patches, plus a fan
+  // triangle per edge of the six caps: the spout's and the handle's ends (2 patches' 8
+  // segments each) and the lid's and the rim's edges (4 patches' 8 each).
+  EXPECT_EQ(teapot.triangles.size(), 32u * 128u - 8u * 8u + 4u * 16u + 2u * 32u);
   EXPECT_LT(misoriented_fraction(teapot), 0.01);
 }
 
@@ -63,21 +46,41 @@ TEST(Teapot, StandsOnTheFloorOneUnitTallSpoutTowardPlusX) {
   EXPECT_NEAR(b.min.z, -2.0f / 3.15f, 0.002f);
 }
 
-TEST(Teapot, IsClosedIshAndConsistentlyWound) {
-  const Mesh teapot = make_teapot(8);
-  size_t boundary = 0, inconsistent = 0, non_manifold = 0;
-  const auto uses = edge_uses(teapot);
-  for (const auto& [edge, use] : uses) {
-    boundary += use.count == 1;
-    non_manifold += use.count > 2;
-    inconsistent += use.count == 2 && use.orientation != 0;
+// The patches' seams share vertices and the six holes are capped: closed, every edge run
+// once each way, which also rules out inconsistent winding and non-manifold edges.
+TEST(Teapot, IsClosedAfterWeldingByPosition) {
+  for (const int n : {2, 3, 8, 16}) {
+    const Mesh teapot = make_teapot(n);
+    EXPECT_TRUE(closed_after_welding(teapot)) << n;
+    EXPECT_GT(signed_volume(teapot), 0.0) << n;  // wound outward
   }
-  // Open only where the data is: the lid/rim gap, the spout's ends and the
-  // handle's ends (8 segments each round): well under 5% of the edges.
-  EXPECT_LT(double(boundary) / double(uses.size()), 0.05);
-  EXPECT_EQ(non_manifold, 0u);
-  EXPECT_EQ(inconsistent, 0u);
-  EXPECT_GT(signed_volume(teapot), 0.0);  // wound outward
+}
+
+// The caps are the triangles whose three vertex normals are one (the smooth patches' differ).
+// Each hole's rim is a plane curve (its control points lie in a plane), so a cap is flat:
+// its triangles' face normals are its normal to float rounding, far inside the 0.8° that
+// 0.9999 allows (which also holds the axis-aligned caps to their axes). Facing out of what they close:
+// up from the rim's gap and the spout's tip, down under the lid, back (−x) from the spout's
+// base, forward (+x, into the body) from the handle's ends.
+TEST(Teapot, CapsAreFlatAndFaceOutward) {
+  const Mesh teapot = make_teapot(8);
+  int up = 0, down = 0, back = 0, forward = 0, caps = 0;
+  for (const glm::uvec3& t : teapot.triangles) {
+    const glm::vec3 n = teapot.normals[t.x];
+    if (n != teapot.normals[t.y] || n != teapot.normals[t.z]) continue;
+    ++caps;
+    EXPECT_GT(glm::dot(face_normal(teapot.positions[t.x], teapot.positions[t.y], teapot.positions[t.z]), n),
+              0.9999f);
+    up += n.y > 0.9999f;
+    down += n.y < -0.9999f;
+    back += n.x < -0.9999f;
+    forward += n.x > 0.9f;  // the handle's ends lean 18° and 24° off +x
+  }
+  EXPECT_EQ(caps, 128);
+  EXPECT_EQ(up, 32 + 16);
+  EXPECT_EQ(down, 32);
+  EXPECT_EQ(back, 16);
+  EXPECT_EQ(forward, 16 + 16);
 }
 
 TEST(Teapot, PoleNormalsPointUpAndDown) {

@@ -4,12 +4,15 @@
 
 #include <airlight/error.hpp>
 #include <airlight/scene.hpp>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
 #include <gtest/gtest.h>
+#include <map>
 #include <string>
+#include <utility>
 
 namespace airlight::scene_test {
 
@@ -71,6 +74,29 @@ inline double misoriented_fraction(const Mesh& mesh) {
     if (glm::dot(n, mean) <= 0.0f) ++bad;
   }
   return double(bad) / double(mesh.triangles.size());
+}
+
+// Whether the mesh, welded by exact position, is closed: every edge run by exactly two
+// triangles, once in each direction (what counting shadow volumes needs, Biri §5.1.1).
+inline ::testing::AssertionResult closed_after_welding(const Mesh& mesh) {
+  std::map<std::array<float, 3>, uint32_t> index_of;  // +0.0f: −0 and +0 are one position
+  const auto welded = [&](uint32_t i) {
+    const glm::vec3& p = mesh.positions[i];
+    return index_of.try_emplace({p.x + 0.0f, p.y + 0.0f, p.z + 0.0f}, uint32_t(index_of.size())).first->second;
+  };
+  std::map<std::pair<uint32_t, uint32_t>, int> runs;
+  for (const glm::uvec3& t : mesh.triangles) {
+    const uint32_t w[3] = {welded(t.x), welded(t.y), welded(t.z)};
+    for (int k = 0; k < 3; ++k) ++runs[{w[k], w[(k + 1) % 3]}];
+  }
+  size_t unmatched = 0;
+  for (const auto& [edge, count] : runs) {
+    const auto back = runs.find({edge.second, edge.first});
+    unmatched += count != 1 || back == runs.end() || back->second != 1;
+  }
+  if (unmatched == 0) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << mesh.name << ": " << unmatched << " of " << runs.size()
+                                       << " directed edges not matched once by their reverse";
 }
 
 // The signed volume enclosed by a closed mesh (positive when it winds outward).
