@@ -62,6 +62,7 @@ struct Measurement {
   double method_s = 0.0;  // the median seconds of the method's own passes (all but the shared frame's)
   double floor_ns = 0.0;  // the floor's ns per sample at this size; 0: not timed
   double first_frame_s = 0.0;  // the first frame: it compiles the programs of a new define set
+  std::vector<std::pair<std::string, double>> stats;  // the method's counters of the last frame
 };
 
 // The shared frame's passes; every other pass is the method's own.
@@ -237,6 +238,7 @@ Measurement measure(const Variant& variant, const Scene& scene, Size size, const
   method->prepare(scene);
   const FrameImages last = time_frames(*method, scene, size, is_reference ? 0 : o.warmup, m.frames, gpu_before, &m);
   m.peak_rss_mib = peak_rss_mib();
+  m.stats = last.stats;
   for (const auto& [name, value] : last.stats)
     if (name == "light_samples" || name == "fragments") m.samples = std::max(value, 0.0);
   for (const auto& [pass, seconds] : m.pass_median_s)
@@ -304,7 +306,8 @@ void write_measurements(const std::filesystem::path& file, const std::vector<Mea
   std::vector<std::string> header{"scene", "width", "height", "method", "settings", "frames",
                                   "frame_median_s", "frame_min_s", "frame_max_s", "first_frame_s"};
   for (const auto& pass : passes) header.push_back(pass + "_median_s");
-  header.insert(header.end(), {"gpu_mib", "peak_rss_mib", "rel_rmse", "max_abs", "ns_per_sample", "floor_ratio"});
+  header.insert(header.end(),
+                {"gpu_mib", "peak_rss_mib", "rel_rmse", "max_abs", "ns_per_sample", "floor_ratio", "stats"});
   std::vector<std::vector<std::string>> table{header};
   for (const auto& m : rows) {
     std::vector<std::string> row{m.scene, std::to_string(m.size.width), std::to_string(m.size.height), m.method,
@@ -319,6 +322,9 @@ void write_measurements(const std::filesystem::path& file, const std::vector<Mea
     const double ns = m.samples > 0.0 ? m.method_s / m.samples * 1e9 : 0.0;
     row.push_back(ns > 0.0 ? number(ns) : "");
     row.push_back(ns > 0.0 && m.floor_ns > 0.0 ? number(ns / m.floor_ns) : "");
+    std::string stats;
+    for (const auto& [name, value] : m.stats) stats += (stats.empty() ? "" : " ") + name + "=" + number(value);
+    row.push_back(stats);
     table.push_back(std::move(row));
   }
   write_csv(file, table);

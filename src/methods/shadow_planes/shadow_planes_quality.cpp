@@ -1,0 +1,23 @@
+// shadow_planes' rows of the quality table (docs/design.md §6), each tolerance beside its reason.
+#include "methods/kit/quality.hpp"
+
+namespace airlight::kit::test {
+namespace {
+
+// clang-format off
+const Case rows[] = {
+  // shadow_planes (Biri 2006) sees the reference's own triangles: its shadows
+  // are exact, and what remains is Γ's accuracy and the reference's quadrature
+  // (rel_tol 1e-3). A plane missing from a silhouette flips the count behind
+  // it along every ray that crosses it: a wedge of pixels off by the whole
+  // shaft, far above these bounds (docs/decisions.md).
+  {"shadow_planes", "biri_sphere", {}, 0.005, "exact shadows: Γ and the reference's quadrature (measured 1e-4)"},
+  {"shadow_planes", "biri_pens", {}, 0.005, "exact shadows, nested volumes: Γ and the reference (measured 0.0010)"},
+  {"shadow_planes", "teapot_spot", {}, 0.005, "exact shadows of the closed teapot: Γ and the reference (measured 0.0007)"},
+};
+// clang-format on
+
+INSTANTIATE_TEST_SUITE_P(Table, Quality, ::testing::ValuesIn(rows), case_name);
+
+}  // namespace
+}  // namespace airlight::kit::test
