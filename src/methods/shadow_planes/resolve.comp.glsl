@@ -12,9 +12,9 @@
 // (next_event). Crossings at equal t give empty intervals, whose Γ is 0.
 //
 // Gobos: Γ has no closed form with a light map's colours, so each lit
-// interval's Γ is multiplied by the gobo's mean colour over GOBO_SAMPLES (a setting)
-// directions of the interval (even in the angle seen from the light, where
-// the 1/r² integrand is flat; uniform along a beam), docs/decisions.md.
+// interval's Γ is multiplied by the gobo's colour averaged over GOBO_SAMPLES
+// (a setting) points of the interval, weighted as Γ weighs them
+// (interval_gobo), docs/decisions.md.
 #define SCENE_IN_REGISTERS
 #include "methods/kit/closed_form.glsl"
 #include "methods/kit/equiangular.glsl"
@@ -50,27 +50,37 @@ uint next_event(int i, uint head, float t, uint node) {
   return best;
 }
 
-// The gobo's mean colour over light i's lit interval [a, b] (see the top),
-// sampled where the light reaches: inside the spot's cone or the beam's box
-// (lit_interval), where Γ is not 0.
+// light_map without the gobo: the spot's cone factor, or 1 inside a beam.
+float light_shape(int i, vec3 x) {
+  if (light_types[i] != LIGHT_SPOT) return has_beam(i) && !inside_beam(light_beam(i), x) ? 0.0 : 1.0;
+  vec3 delta = x - LIGHT(i).position;
+  float r = length(delta);
+  return spot_cone(LIGHT(i).direction, LIGHT(i).cone, light_edges[i] ? LIGHT(i).edge : 0.0,
+                   r > 0.0 ? delta / r : LIGHT(i).direction);
+}
+
+// The gobo's colour over light i's lit interval [a, b] as Γ weighs it: at
+// GOBO_SAMPLES points where the light reaches (lit_interval: the spot's cone,
+// the beam's box), even in the angle seen from a spot (uniform along a beam),
+// Σ f·map / Σ f·shape with f the unoccluded in-scattering without the light
+// map times the sample's weight: a ratio estimator that is exact when the
+// gobo is constant over the interval and keeps the correlation of its colour
+// with the cone's edge, the phase function and extinction (docs/decisions.md).
 vec3 interval_gobo(int i, vec3 eye, vec3 dir, float a, float b) {
   if (!light_gobos[i]) return vec3(1.0);
   vec2 lit = lit_interval(i, eye, dir, a, b);
   if (!(lit.y > lit.x)) return vec3(1.0);  // Γ is 0 there
-  vec3 sum = vec3(0.0);
-  if (light_types[i] == LIGHT_SPOT) {
-    Segment s = equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
-    for (int k = 0; k < GOBO_SAMPLES; ++k) {
-      vec3 x = eye + segment_sample(s, (float(k) + 0.5) / float(GOBO_SAMPLES), GOBO_SAMPLES).x * dir;
-      vec3 to_x = normalize(x - LIGHT(i).position);
-      sum += gobo_colour(i, gobo_uv(LIGHT(i).direction, LIGHT(i).gobo_right, LIGHT(i).gobo_up, LIGHT(i).tan_cone, to_x));
-    }
-  } else {
-    Beam beam = light_beam(i);
-    for (int k = 0; k < GOBO_SAMPLES; ++k)
-      sum += gobo_colour(i, beam_uv(beam, eye + mix(lit.x, lit.y, (float(k) + 0.5) / float(GOBO_SAMPLES)) * dir));
+  Segment s = light_types[i] == LIGHT_SPOT ? equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position)
+                                           : uniform_segment(lit.x, lit.y);
+  vec3 mapped = vec3(0.0), shaped = vec3(0.0);
+  for (int k = 0; k < GOBO_SAMPLES; ++k) {
+    vec2 t = segment_sample(s, (float(k) + 0.5) / float(GOBO_SAMPLES), GOBO_SAMPLES);
+    vec3 x = eye + t.x * dir;
+    vec3 f = inscatter_unmapped(i, x, dir, eye_leg_depth(eye, x)) * t.y;
+    mapped += f * light_map(i, x);
+    shaped += f * light_shape(i, x);
   }
-  return sum / float(GOBO_SAMPLES);
+  return mix(vec3(1.0), mapped / max(shaped, vec3(1e-30)), greaterThan(shaped, vec3(0.0)));
 }
 
 vec3 lit_gamma(int i, vec3 eye, vec3 dir, float a, float b) {
