@@ -1,7 +1,9 @@
 // Γ(t0 → t1), the unoccluded airlight of one light along a view segment in the
-// medium that fills space: the GLSL twin of optics::gamma (src/optics/gamma.cpp).
-// Bounded volumes and gobos are ignored (closed forms need one homogeneous
-// medium; Γ uses the cone and the beam's box, not the light map's colours).
+// medium that fills space, or in one component of a piecewise-homogeneous one:
+// the GLSL twin of optics::gamma (src/optics/gamma.cpp). Bounded volumes and
+// gobos are ignored (closed forms need one homogeneous medium: a method that
+// wants volumes cuts the ray into pieces and sums their components; Γ uses the
+// cone and the beam's box, not the light map's colours).
 // Defining SUN_F_TABLE (and BINDING_SUN_TABLE) makes the isotropic Sun path
 // read F from the SunTable texture; otherwise it integrates in the shader.
 #include "methods/kit/scene.glsl"
@@ -11,39 +13,55 @@
 layout(binding = BINDING_SUN_TABLE) uniform sampler2D sun_table;
 #endif
 
-bool isotropic_medium() { return MEDIUM_ISOTROPIC != 0; }
+// One component of the medium along a piece: its scattering σs, the phase of the medium that
+// fills space (phase = -1) or of volume v (phase = v >= 0), and the extinction σt of everything
+// that fills the piece (both legs). Inside a piece Γ is linear in σs·p, so a piece's airlight
+// is the sum of its components' (Biri §5.2).
+struct MediumComponent { vec3 sigma_s; vec3 sigma_t; int phase; };
+
+// The frame's: the medium that fills space, alone.
+MediumComponent filling_medium() { return MediumComponent(frame.medium_sigma_s, frame.medium_sigma_t, -1); }
+
+// The component's phase function at cos θ. A constant m.phase folds the choice
+// away (scene_defines.cpp), so the medium pays for no volume's lobes.
+float component_phase(MediumComponent m, float c) { return m.phase < 0 ? medium_phase(c) : VOLUME_PHASE(m.phase, c); }
+
+// Whether its phase is isotropic: Sun et al.'s path applies.
+bool isotropic_component(MediumComponent m) { return m.phase < 0 ? MEDIUM_ISOTROPIC != 0 : VOLUME_ISOTROPIC(m.phase); }
 
 // Sun et al. (Kingston eqs. 36-40) over [a, b] per channel, times the eye's
 // extinction to a. Γ is linear in the intensity: in grey media one channel with
-// I = 1, times the light's colour, gives all three.
-float sun_channel(int c, vec3 origin, vec3 dir, vec3 light, float I, float length) {
+// I = 1, times the light's colour, gives all three (GREY_MEDIA covers the
+// volumes too, so a component's σs and σt, sums of grey σ, are grey).
+float sun_channel(int c, MediumComponent m, vec3 origin, vec3 dir, vec3 light, float I, float length) {
 #ifdef SUN_F_TABLE
-  return sun_airlight_table(sun_table, frame.medium_sigma_s[c], frame.medium_sigma_t[c], I, origin, dir, light, length);
+  return sun_airlight_table(sun_table, m.sigma_s[c], m.sigma_t[c], I, origin, dir, light, length);
 #else
-  return sun_airlight_ray(frame.medium_sigma_s[c], frame.medium_sigma_t[c], I, origin, dir, light, length);
+  return sun_airlight_ray(m.sigma_s[c], m.sigma_t[c], I, origin, dir, light, length);
 #endif
 }
 
-vec3 sun_piece(int i, vec3 eye, vec3 dir, float a, float b) {
+vec3 sun_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b) {
   vec3 origin = eye + a * dir;
 #if GREY_MEDIA
-  return exp(-frame.medium_sigma_t.r * a) * sun_channel(0, origin, dir, LIGHT(i).position, 1.0, b - a) * LIGHT(i).color;
+  return exp(-m.sigma_t.r * a) * sun_channel(0, m, origin, dir, LIGHT(i).position, 1.0, b - a) * LIGHT(i).color;
 #else
   vec3 sum;
   for (int c = 0; c < 3; ++c)
-    sum[c] = exp(-frame.medium_sigma_t[c] * a) * sun_channel(c, origin, dir, LIGHT(i).position, LIGHT(i).color[c], b - a);
+    sum[c] = exp(-m.sigma_t[c] * a) * sun_channel(c, m, origin, dir, LIGHT(i).position, LIGHT(i).color[c], b - a);
   return sum;
 #endif
 }
 
-vec3 nilsson_piece(int i, vec3 eye, vec3 dir, float a, float b) {
+// Nilsson 2.5: no extinction and its own isotropic phase, so only σs is the component's.
+vec3 nilsson_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b) {
 #if GREY_MEDIA
-  return nilsson_airlight(frame.medium_sigma_s.r, 1.0, frame.light_model_a0, frame.light_model_a1, eye, dir,
+  return nilsson_airlight(m.sigma_s.r, 1.0, frame.light_model_a0, frame.light_model_a1, eye, dir,
                           LIGHT(i).position, a, b) * LIGHT(i).color;
 #else
   vec3 sum;
   for (int c = 0; c < 3; ++c)
-    sum[c] = nilsson_airlight(frame.medium_sigma_s[c], LIGHT(i).color[c], frame.light_model_a0, frame.light_model_a1, eye,
+    sum[c] = nilsson_airlight(m.sigma_s[c], LIGHT(i).color[c], frame.light_model_a0, frame.light_model_a1, eye,
                               dir, LIGHT(i).position, a, b);
   return sum;
 #endif
@@ -51,14 +69,14 @@ vec3 nilsson_piece(int i, vec3 eye, vec3 dir, float a, float b) {
 
 // gamma.cpp biri_angular: ∫ p(cos θ)·cone·exp(-σt(x + r))/r² dx over [t0, t1],
 // Biri's angle φ through s = asinh((x - xs)/h): dx/r² = ds/(h cosh s), cos θ = -tanh s.
-vec3 biri_angular(int i, vec3 eye, vec3 dir, float t0, float t1) {
+vec3 biri_angular(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1) {
   vec3 light = LIGHT(i).position, delta = light - eye;
   float xs = dot(delta, dir);
   vec3 off = delta - xs * dir;
   float h_true = length(off), h = max(h_true, MIN_LIGHT_DISTANCE);
   vec3 normal = h_true > 0.0 ? off / h_true : normalize(cross(dir, vec3(dir.y, dir.z, -dir.x)));
   bool smooth_edge = light_types[i] == LIGHT_SPOT && light_edges[i];
-  vec3 sigma_t = frame.medium_sigma_t;
+  vec3 sigma_t = m.sigma_t;
   float fast = max(sigma_t.r, max(sigma_t.g, sigma_t.b)), slow = min(sigma_t.r, min(sigma_t.g, sigma_t.b));
   float s0 = stable_asinh((t0 - xs) / h), s1 = stable_asinh((t1 - xs) / h);
   float e0 = h * exp(s0);
@@ -70,7 +88,7 @@ vec3 biri_angular(int i, vec3 eye, vec3 dir, float t0, float t1) {
     for (int k = 0; k < 8; ++k) {
       float s = 0.5 * (a + b) + 0.5 * (b - a) * (k < 4 ? -BIRI_GL_X[k] : BIRI_GL_X[k - 4]);
       float w = 0.5 * (b - a) * BIRI_GL_W[k % 4];
-      float f = medium_phase(-tanh(s));
+      float f = component_phase(m, -tanh(s));
       if (smooth_edge)
         f *= spot_cone(LIGHT(i).direction, LIGHT(i).cone, LIGHT(i).edge,
                        normalize(tanh(s) * dir - normal / cosh(s)));
@@ -83,18 +101,18 @@ vec3 biri_angular(int i, vec3 eye, vec3 dir, float t0, float t1) {
 }
 
 // One lit piece of a point or spot light (gamma.cpp local_piece); 0 if empty.
-vec3 local_piece(int i, vec3 eye, vec3 dir, float a, float b) {
+vec3 local_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b) {
   if (!(b > a)) return vec3(0.0);
-  if (simplified_model()) return nilsson_piece(i, eye, dir, a, b);
+  if (simplified_model()) return nilsson_piece(i, m, eye, dir, a, b);
   bool smooth_edge = light_types[i] == LIGHT_SPOT && light_edges[i];
-  if (isotropic_medium() && !smooth_edge) return sun_piece(i, eye, dir, a, b);
-  return frame.medium_sigma_s * LIGHT(i).color * biri_angular(i, eye, dir, a, b);
+  if (isotropic_component(m) && !smooth_edge) return sun_piece(i, m, eye, dir, a, b);
+  return m.sigma_s * LIGHT(i).color * biri_angular(i, m, eye, dir, a, b);
 }
 
 // A spot: its cone_intervals (hard cut at the cone), each cut again at the
 // inner cone's ends under a smooth edge (gamma.cpp spot_gamma): those pieces
 // lie inside the outer one, in ascending order.
-vec3 spot_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
+vec3 spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1) {
   vec3 apex = LIGHT(i).position, axis = LIGHT(i).direction;
   float cone = LIGHT(i).cone, inner = cone - LIGHT(i).edge;
   bool cut = light_edges[i] && inner > 0.0 && !simplified_model();
@@ -105,19 +123,20 @@ vec3 spot_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
     ConeIntervals core = ConeIntervals(0, vec2[2](vec2(0.0), vec2(0.0)));
     if (cut) core = cone_intervals(apex, axis, inner, eye, dir, start, end);
     for (int j = 0; j < core.count; ++j) {
-      sum += local_piece(i, eye, dir, start, core.piece[j].x) + local_piece(i, eye, dir, core.piece[j].x, core.piece[j].y);
+      sum += local_piece(i, m, eye, dir, start, core.piece[j].x) +
+             local_piece(i, m, eye, dir, core.piece[j].x, core.piece[j].y);
       start = core.piece[j].y;
     }
-    sum += local_piece(i, eye, dir, start, end);
+    sum += local_piece(i, m, eye, dir, start, end);
   }
   return sum;
 }
 
 // gamma.cpp directional: the exact exponential form, over the beam's box if any.
-vec3 directional_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
+vec3 directional_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1) {
   vec3 travel = LIGHT(i).direction;
   bool simplified = simplified_model();
-  float p = simplified ? INV_4PI : medium_phase(dot(-travel, dir));
+  float p = simplified ? INV_4PI : component_phase(m, dot(-travel, dir));
   float along = 0.0, s_start = 0.0;
   if (has_beam(i)) {
     Beam beam = light_beam(i);
@@ -128,15 +147,20 @@ vec3 directional_gamma(int i, vec3 eye, vec3 dir, float t0, float t1) {
     along = dot(dir, travel);
     s_start = max(beam_depth(beam, eye + t0 * dir), 0.0);
   }
-  vec3 sigma_t = simplified ? vec3(0.0) : frame.medium_sigma_t;
-  return frame.medium_sigma_s * p * LIGHT(i).color * exp(-sigma_t * (t0 + s_start)) *
+  vec3 sigma_t = simplified ? vec3(0.0) : m.sigma_t;
+  return m.sigma_s * p * LIGHT(i).color * exp(-sigma_t * (t0 + s_start)) *
          exponential_length(sigma_t * (1.0 + along), t1 - t0);
 }
 
-// Γ of light i along eye + t·dir (unit dir) over [t0, t1]: the entry point of
-// the `analytic` method.
+// Γ of light i scattered by component m along eye + t·dir (unit dir) over
+// [t0, t1], a piece that m's σt fills (optics::gamma with that Medium).
+vec3 component_airlight(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1) {
+  if (light_types[i] == LIGHT_DIRECTIONAL) return directional_gamma(i, m, eye, dir, t0, t1);
+  if (light_types[i] == LIGHT_POINT) return local_piece(i, m, eye, dir, t0, t1);
+  return spot_gamma(i, m, eye, dir, t0, t1);
+}
+
+// Γ of light i in the medium that fills space: the entry point of the `analytic` method.
 vec3 closed_form_airlight(int i, vec3 eye, vec3 dir, float t0, float t1) {
-  if (light_types[i] == LIGHT_DIRECTIONAL) return directional_gamma(i, eye, dir, t0, t1);
-  if (light_types[i] == LIGHT_POINT) return local_piece(i, eye, dir, t0, t1);
-  return spot_gamma(i, eye, dir, t0, t1);
+  return component_airlight(i, filling_medium(), eye, dir, t0, t1);
 }

@@ -41,6 +41,14 @@ std::string phase_expression(const std::vector<SceneLobe>& lobes, int first, int
   return text + ")";
 }
 
+// Whether lobes [first, first + count) are all isotropic: closed_form.glsl may
+// then take Sun et al.'s path.
+bool isotropic(const std::vector<SceneLobe>& lobes, int first, int count) {
+  for (int k = first; k < first + count; ++k)
+    if (lobes[k].type != static_cast<int>(PhaseType::isotropic)) return false;
+  return true;
+}
+
 bool grey(const glm::vec3& c) { return c.r == c.g && c.g == c.b; }
 
 }  // namespace
@@ -71,14 +79,17 @@ std::string structure_defines(const std::vector<SceneLight>& lights, const std::
   d += "#define LIGHT_EDGES " + glsl_array("bool", edges) + "\n";
   d += for_each("LIGHT", lights.size()) + for_each("VOLUME", volumes.size()) + for_each("LOBE", lobes.size());
   d += "#define MEDIUM_PHASE(c) " + phase_expression(lobes, 0, medium_lobes) + "\n";
-  bool isotropic = true;
-  for (int k = 0; k < medium_lobes; ++k) isotropic = isotropic && lobes[k].type == static_cast<int>(PhaseType::isotropic);
-  d += std::string("#define MEDIUM_ISOTROPIC ") + (isotropic ? "1" : "0") + "\n";
+  d += std::string("#define MEDIUM_ISOTROPIC ") + (isotropic(lobes, 0, medium_lobes) ? "1" : "0") + "\n";
   std::string volume_phase = "0.0";  // VOLUME_PHASE(v, c): a chain of constant conditions that folds
   for (size_t v = volumes.size(); v-- > 0;)
     volume_phase = "((v) == " + std::to_string(v) + " ? " +
                    phase_expression(lobes, volumes[v].first_lobe, volumes[v].lobe_count) + " : " + volume_phase + ")";
   d += "#define VOLUME_PHASE(v, c) " + volume_phase + "\n";
+  std::string volume_isotropic = "false";  // VOLUME_ISOTROPIC(v): v is one of the isotropic volumes; folds too
+  for (size_t v = 0; v < volumes.size(); ++v)
+    if (isotropic(lobes, volumes[v].first_lobe, volumes[v].lobe_count))
+      volume_isotropic += " || (v) == " + std::to_string(v);
+  d += "#define VOLUME_ISOTROPIC(v) (" + volume_isotropic + ")\n";
   return d;
 }
 
