@@ -15,7 +15,7 @@ namespace {
 class ShadowPlanes final : public kit::GpuMethod {
 public:
   explicit ShadowPlanes(const Settings& s)
-      : GpuMethod(s), crossings_(s.real("capacity")), gobo_samples_(s.integer("gobo_samples")) {}
+      : GpuMethod(s), crossings_(s.real("capacity")), samples_(s.integer("samples")) {}
 
 private:
   void prepare_airlight(const Scene& scene) override { crossings_.prepare(scene); }
@@ -28,7 +28,7 @@ private:
     gpu::ScopedPass pass(timer, "airlight");
     const gpu::Program& program = gpu::cached_compute_program(
         "methods/shadow_planes/resolve.comp.glsl",
-        frame.defines() + CrossingPass::defines() + "#define GOBO_SAMPLES " + std::to_string(gobo_samples_) + "\n");
+        frame.defines() + CrossingPass::defines() + "#define SAMPLES " + std::to_string(samples_) + "\n");
     glUseProgram(program.id());
     crossings_.bind();
     gpu::set_uniform(program, "eye_counts", crossings_.eye_counts());
@@ -42,7 +42,7 @@ private:
   std::vector<std::pair<std::string, double>> stats() const override { return crossings_.stats(); }
 
   CrossingPass crossings_;
-  int gobo_samples_;
+  int samples_;
 };
 
 MethodInfo shadow_planes_method() {
@@ -51,14 +51,16 @@ MethodInfo shadow_planes_method() {
       {"capacity", T::real, 4.0, 0.01, 256.0, {},
        "crossings per pixel (on average over the image) the node pool holds at first; a frame with more grows "
        "the pool and draws the planes again, so no crossing is ever dropped (the report's `redraws`)"},
-      {"gobo_samples", T::integer, 64, 1, 1024, {},
-       "a gobo has no closed form: each lit interval's Γ is multiplied by the gobo's mean colour over this many "
-       "directions of the interval, even in the angle seen from a spot (uniform along a beam)"}};
+      {"samples", T::integer, 64, 1, 1024, {},
+       "points per lit interval where what Γ has no closed form for — a gobo's colours, the light's leg through "
+       "other bounded volumes — is sampled: Γ times the ratio of the exact in-scattering to Γ's integrand there "
+       "(even in the angle seen from a spot, uniform along a beam); unused without gobos and volumes"}};
   return {"shadow_planes", "Biri 2006",
           "exact volumetric shadows from the casters' silhouette edges (every triangle edge of an open caster) "
           "extruded away from each light to infinity; per pixel the planes' crossings with the view ray, sorted "
           "and counted from the eye's count, give each light's lit intervals, over which the closed-form Γ is "
-          "summed (gobo colours: their mean over each interval); the medium that fills space only",
+          "summed, piece by piece through bounded volumes (Biri §5.2); gobos and the light's leg through other "
+          "volumes by a sampled ratio",
           kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<ShadowPlanes>(s); }};
 }
 
