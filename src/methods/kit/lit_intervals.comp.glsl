@@ -1,13 +1,13 @@
-// shadow_planes (Biri 2006 §4.2, §5.1): per pixel, L_air = Σ_lights Σ over the
-// lit intervals [a, b] of the view ray of Γ(a → b), the closed-form airlight
-// of the medium that fills space (closed_form.glsl, the twin of optics::gamma).
+// Per pixel, L_air = Σ_lights Σ over the lit intervals [a, b] of the view ray
+// of Γ(a → b), the closed-form airlight (closed_form.glsl, the twin of
+// optics::gamma): Biri 2006 §4.2 (shadow_planes) and Nilsson 2008 §3.2
+// (beam_volumes) sum it over the same intervals.
 //
-// The lit intervals come from counting: light i's shadow count starts at the
-// eye's (how many triangle shadow volumes contain the eye, counted on the CPU
-// per frame) and changes by each crossing's signed weight in the order of t;
-// the ray is lit by i where the count is 0. Counting is exact whatever the
-// order or nesting of the volumes — shadow in shadow, the eye inside one or
-// several volumes — which Biri gets from drawing back to front with the
+// The lit intervals come from counting (lit_intervals.glsl): light i's count
+// starts at the eye's (computed on the CPU per frame) and changes by each
+// crossing's signed weight in the order of t; the ray is lit by i where the
+// count is 0. Counting is exact whatever the order or nesting of the volumes
+// and wherever the eye is, which Biri gets from drawing back to front with the
 // stencil; here each light walks the pixel's crossings in the order of t
 // (next_event). Crossings at equal t give empty intervals, whose Γ is 0.
 //
@@ -19,13 +19,13 @@
 #define SCENE_IN_REGISTERS
 #include "methods/kit/closed_form.glsl"
 #include "methods/kit/equiangular.glsl"
-#include "methods/shadow_planes/crossings.glsl"
+#include "methods/kit/lit_intervals.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) writeonly uniform image2D airlight_out;
 layout(r32ui, binding = 1) readonly uniform uimage2D heads;
 
-uniform int eye_counts[LIGHT_COUNT];  // each light's shadow count at the eye
+uniform int eye_counts[LIGHT_COUNT];  // each light's count at the eye
 
 
 float node_t(uint node) { return uintBitsToFloat(nodes[3u * node]); }

@@ -1,0 +1,145 @@
+#include "methods/kit/lit_interval_pass.hpp"
+
+#include "gpu/program.hpp"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+namespace airlight::kit {
+namespace {
+
+constexpr GLuint counted_binding = binding::first_free_storage;
+constexpr GLuint nodes_binding = counted_binding + 1;
+constexpr GLuint node_count_binding = counted_binding + 2;
+constexpr GLuint end_of_list = 0xffffffffu;
+constexpr size_t node_bytes = 3 * sizeof(GLuint);
+
+// A homogeneous point as a finite one and a direction: (p, 1) → p; (d, 0) → d.
+glm::dvec3 finite(const glm::dvec4& p) { return glm::dvec3(p); }
+
+}  // namespace
+
+glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c) {
+  // With one corner at infinity its direction spans the plane with the finite edge.
+  glm::dvec3 n;
+  if (c.w == 0.0) n = glm::cross(finite(b) - finite(a), finite(c));
+  else if (b.w == 0.0) n = glm::cross(finite(b), finite(c) - finite(a));
+  else if (a.w == 0.0) n = glm::cross(finite(c) - finite(b), finite(a));
+  else n = glm::cross(finite(b) - finite(a), finite(c) - finite(a));
+  const glm::dvec3 point = finite(a.w != 0.0 ? a : b);
+  const double length = glm::length(n);
+  const glm::dvec3 unit = length > 0.0 ? n / length : n;
+  return glm::vec4(glm::vec3(unit), static_cast<float>(glm::dot(unit, point)));
+}
+
+std::vector<SettingSpec> lit_interval_settings() {
+  using T = SettingSpec::Type;
+  return {{"capacity", T::real, 4.0, 0.01, 256.0, {},
+           "crossings per pixel (on average over the image) the node pool holds at first; a frame with more grows "
+           "the pool and draws again, so no crossing is ever dropped (the report's `redraws`)"},
+          {"samples", T::integer, 64, 1, 1024, {},
+           "points per lit interval where what Γ has no closed form for — a gobo's colours, the light's leg "
+           "through other bounded volumes — is sampled: Γ times the ratio of the exact in-scattering to Γ's "
+           "integrand there (even in the angle seen from a spot, uniform along a beam); unused without gobos and "
+           "volumes"}};
+}
+
+LitIntervalPass::LitIntervalPass(const Settings& s)
+    : capacity_per_pixel_(s.real("capacity")), samples_(s.integer("samples")) {}
+
+void LitIntervalPass::prepare() {
+  fbo_ = gpu::make_framebuffer();
+  no_vertices_ = gpu::make_vertex_array();  // the triangles come from their buffer by gl_VertexID
+  node_count_ = gpu::make_buffer(2 * sizeof(GLuint), nullptr);
+}
+
+std::string LitIntervalPass::defines() const {
+  return "#define BINDING_COUNTED " + std::to_string(counted_binding) + "\n#define BINDING_NODES " +
+         std::to_string(nodes_binding) + "\n#define BINDING_NODE_COUNT " + std::to_string(node_count_binding) +
+         "\n#define SAMPLES " + std::to_string(samples_) + "\n";
+}
+
+void LitIntervalPass::allocate_pool(size_t nodes) {
+  node_capacity_ = nodes;
+  nodes_ = gpu::make_buffer(node_capacity_ * node_bytes, nullptr);
+}
+
+void LitIntervalPass::run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles,
+                          const std::vector<int>& eye_counts, const gpu::Texture& target, gpu::PassTimer& timer) {
+  {
+    gpu::ScopedPass pass(timer, "crossings");
+    if (triangles.size() > triangle_capacity_ || triangles_.id() == 0) {
+      triangle_capacity_ = std::max<size_t>(triangles.size(), 1);
+      triangles_ = gpu::make_buffer(triangle_capacity_ * sizeof(CountedTriangle), nullptr);
+    }
+    if (!triangles.empty())
+      glNamedBufferSubData(triangles_.id(), 0, triangles.size() * sizeof(CountedTriangle), triangles.data());
+    if (frame.width() != width_ || frame.height() != height_) {
+      width_ = frame.width();
+      height_ = frame.height();
+      heads_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
+      glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width_);
+      glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height_);
+    }
+    if (nodes_.id() == 0)
+      allocate_pool(std::max<size_t>(static_cast<size_t>(double(width_) * height_ * capacity_per_pixel_), 1));
+    redraws_ = 0;
+    draw(frame, triangles.size());
+    while (crossings_ > node_capacity_) {  // some crossings did not fit: a larger pool, drawn again
+      allocate_pool(crossings_ + crossings_ / 4);
+      ++redraws_;
+      draw(frame, triangles.size());
+    }
+  }
+  gpu::ScopedPass pass(timer, "airlight");
+  resolve(frame, eye_counts, target);
+}
+
+// The triangles rasterized over an attachment-less framebuffer: no depth test
+// (each fragment compares its t with the G-buffer distance), no culling (both
+// sides count), no near or far clipping (GL_DEPTH_CLAMP).
+void LitIntervalPass::draw(const SceneFrame& frame, size_t triangle_count) {
+  const GLuint empty = end_of_list;
+  glClearTexImage(heads_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+  const GLuint counters[2] = {0, static_cast<GLuint>(std::min<size_t>(node_capacity_, end_of_list))};
+  glNamedBufferSubData(node_count_.id(), 0, sizeof(counters), counters);
+  crossings_ = 0;
+  if (triangle_count == 0) return;
+  const gpu::Program& program = gpu::cached_program(
+      {{GL_VERTEX_SHADER, "methods/kit/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/crossings.frag.glsl"}},
+      frame.defines() + defines());
+  glUseProgram(program.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
+  glBindImageTexture(0, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_CLAMP);
+  glBindVertexArray(no_vertices_.id());
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count));
+  glDisable(GL_DEPTH_CLAMP);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(node_count_.id(), 0, sizeof(GLuint), &crossings_);
+}
+
+void LitIntervalPass::resolve(const SceneFrame& frame, const std::vector<int>& eye_counts, const gpu::Texture& target) {
+  const gpu::Program& program =
+      gpu::cached_compute_program("methods/kit/lit_intervals.comp.glsl", frame.defines() + defines());
+  glUseProgram(program.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
+  gpu::set_uniform(program, "eye_counts", eye_counts);
+  glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  gpu::dispatch_pixels(frame.width(), frame.height());
+}
+
+std::vector<std::pair<std::string, double>> LitIntervalPass::stats() const {
+  return {{"crossings", static_cast<double>(crossings_)}, {"redraws", static_cast<double>(redraws_)}};
+}
+
+}  // namespace airlight::kit

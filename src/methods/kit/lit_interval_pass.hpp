@@ -1,0 +1,70 @@
+#pragma once
+// Lit intervals by counting crossings (lit_intervals.glsl): a method hands in,
+// per frame, the triangles that bound each light's lit region with their
+// weights, and each light's count at the eye; the pass draws their crossings
+// with every pixel's view ray into per-pixel lists ("crossings") and sums Γ
+// over each light's lit intervals into the target ("airlight",
+// lit_intervals.comp.glsl). Shared by shadow_planes and beam_volumes.
+#include "gpu/gl.hpp"
+#include "gpu/timer.hpp"
+#include "methods/kit/scene_frame.hpp"
+
+#include <airlight/scene.hpp>
+#include <airlight/settings.hpp>
+#include <glm/vec4.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace airlight::kit {
+
+// One triangle of a lit region's boundary (lit_intervals.glsl CountedTriangle).
+struct CountedTriangle {
+  glm::vec4 corners[3];  // homogeneous world positions; w = 0: at infinity
+  glm::vec4 plane;       // unit normal n and n·x, computed in double (counted_plane)
+  glm::ivec4 light_weight{0};  // light index, weight w
+};
+
+// The plane through three homogeneous points (at most one at infinity, which
+// then gives the plane's direction), its normal normalized in double and
+// oriented as (b − a) × (c − a): in float, a short edge far from the light
+// loses the normal's direction, and a crossing's sign with it.
+glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c);
+
+// capacity and samples: the settings of the pass (in front of a method's own).
+std::vector<SettingSpec> lit_interval_settings();
+
+class LitIntervalPass {
+public:
+  explicit LitIntervalPass(const Settings& settings);
+
+  // Needs a current context.
+  void prepare();
+
+  // The crossings of `triangles` with the frame's pixel rays, then Σ Γ over
+  // each light's lit intervals into `target`; the frame must be bound.
+  void run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles, const std::vector<int>& eye_counts,
+           const gpu::Texture& target, gpu::PassTimer& timer);
+
+  // crossings (drawn into the lists) and redraws (the pool grown this frame).
+  std::vector<std::pair<std::string, double>> stats() const;
+
+private:
+  void draw(const SceneFrame& frame, size_t triangle_count);
+  void resolve(const SceneFrame& frame, const std::vector<int>& eye_counts, const gpu::Texture& target);
+  void allocate_pool(size_t nodes);
+  std::string defines() const;
+
+  double capacity_per_pixel_;
+  int samples_;
+  gpu::Buffer triangles_, nodes_, node_count_;
+  size_t triangle_capacity_ = 0, node_capacity_ = 0;
+  gpu::Texture heads_;
+  gpu::Framebuffer fbo_;
+  gpu::VertexArray no_vertices_;
+  int width_ = 0, height_ = 0;
+  unsigned crossings_ = 0;
+  int redraws_ = 0;
+};
+
+}  // namespace airlight::kit

@@ -1,0 +1,100 @@
+#include "methods/shadow_planes/silhouettes.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+namespace airlight::methods {
+namespace {
+
+// The plane of W(a, b) with geometry::shadow_plane_normal's orientation
+// (a − L) × (b − L), or D × (b − a) for a directional light, so that the
+// edge's weight counts as it says; normalized in double (kit::counted_plane).
+glm::vec4 wedge_plane(const geometry::ShadowPlane& p, const Light& light) {
+  const glm::dvec3 a(p.a), b(p.b);
+  const bool directional = light.type == LightType::directional;
+  const glm::dvec3 l(light.position), n = directional ? glm::cross(glm::dvec3(light.direction), b - a)
+                                                      : glm::cross(a - l, b - l);
+  const double length = glm::length(n);
+  const glm::dvec3 unit = length > 0.0 ? n / length : n;
+  return glm::vec4(glm::vec3(unit), static_cast<float>(glm::dot(unit, directional ? a : l)));
+}
+
+}  // namespace
+
+void Silhouettes::prepare(const Scene& scene) {
+  casters_.clear();
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    if (!mesh.casts_shadows) continue;
+    casters_.push_back({static_cast<int>(m), geometry::build_topology(mesh.positions, mesh.triangles), {}});
+  }
+}
+
+void Silhouettes::move_casters(const FrameInputs& inputs) {
+  for (Caster& c : casters_) {
+    const glm::mat4 m = inputs.transforms.empty() ? glm::mat4(1.0f) : inputs.transforms[c.mesh];
+    c.world.resize(c.topology.positions.size());
+    std::transform(c.topology.positions.begin(), c.topology.positions.end(), c.world.begin(),
+                   [&m](const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); });
+  }
+}
+
+// Biri §5.1.2: each plane as two triangles, the edge (a, b) and its ends
+// pushed to infinity away from the light (homogeneous w = 0, as robust shadow
+// volumes do), so that no far plane cuts it.
+void Silhouettes::add_planes(const std::vector<geometry::ShadowPlane>& planes, const Light& light, int index) {
+  const bool directional = light.type == LightType::directional;
+  for (const geometry::ShadowPlane& p : planes) {
+    const glm::vec4 a(p.a, 1.0f), b(p.b, 1.0f);
+    const glm::vec4 a_far = directional ? glm::vec4(light.direction, 0.0f) : glm::vec4(p.a - light.position, 0.0f);
+    const glm::vec4 b_far = directional ? glm::vec4(light.direction, 0.0f) : glm::vec4(p.b - light.position, 0.0f);
+    const glm::vec4 plane = wedge_plane(p, light);
+    const glm::ivec4 light_weight(index, p.weight, 0, 0);
+    triangles_.push_back({{a, b, b_far}, plane, light_weight});
+    triangles_.push_back({{a, b_far, a_far}, plane, light_weight});
+  }
+}
+
+// Per caster its welded positions moved by the frame's transform, then per
+// light the planes of every caster and the eye's count (Biri §5.1.1: the
+// silhouettes depend on the light and the caster, so both are rebuilt every frame).
+void Silhouettes::build(const FrameInputs& inputs) {
+  const auto start = std::chrono::steady_clock::now();
+  move_casters(inputs);
+  triangles_.clear();
+  eye_counts_.assign(inputs.lights.size(), 0);
+  plane_count_ = silhouette_edges_ = boundary_edges_ = loops_ = 0;
+  for (size_t i = 0; i < inputs.lights.size(); ++i) {
+    const geometry::LightOrigin light = geometry::light_origin(inputs.lights[i]);
+    planes_.clear();
+    for (const Caster& c : casters_) {
+      const geometry::ShadowPlaneStats s = geometry::append_shadow_planes(c.topology, c.world, light, planes_);
+      silhouette_edges_ += s.silhouette_edges;
+      boundary_edges_ += s.boundary_edges;
+      eye_counts_[i] += geometry::shadow_count(c.topology, c.world, light, inputs.camera.position);
+    }
+    plane_count_ += static_cast<int>(planes_.size());
+    add_planes(planes_, inputs.lights[i], static_cast<int>(i));
+  }
+  build_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const Light& light : inputs.lights)  // for the report, outside build_s: it allocates
+    for (const Caster& c : casters_) loops_ += geometry::shadow_plane_loops(c.topology, c.world, geometry::light_origin(light));
+}
+
+std::vector<std::pair<std::string, double>> Silhouettes::stats() const {
+  double triangles = 0.0;
+  for (const Caster& c : casters_) triangles += static_cast<double>(c.topology.triangles.size());
+  std::vector<std::pair<std::string, double>> s{{"caster_triangles", triangles},
+                                                {"planes", static_cast<double>(plane_count_)},
+                                                {"silhouette_edges", static_cast<double>(silhouette_edges_)},
+                                                {"boundary_edges", static_cast<double>(boundary_edges_)},
+                                                {"silhouette_loops", static_cast<double>(loops_)},
+                                                {"build_s", build_s_}};
+  for (const Caster& c : casters_)
+    s.emplace_back("caster" + std::to_string(c.mesh) + (c.topology.closed ? "_silhouettes" : "_triangle_volumes"), 1.0);
+  return s;
+}
+
+}  // namespace airlight::methods

@@ -1,0 +1,49 @@
+#pragma once
+// The shadow planes of every caster and light for one frame (Biri §5.1): each
+// caster welded with its edges' triangles once per scene, and per frame the
+// edges whose weight is not 0 (geometry/shadow_edges.hpp) extruded away from
+// their light to infinity, as the triangles the kit's lit-interval pass counts.
+#include "geometry/shadow_edges.hpp"
+#include "methods/kit/lit_interval_pass.hpp"
+
+#include <airlight/method.hpp>
+#include <airlight/scene.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace airlight::methods {
+
+class Silhouettes {
+public:
+  // Welds each shadow caster (Mesh::casts_shadows) and finds its edges' triangles.
+  void prepare(const Scene& scene);
+
+  // The frame's planes (timed as build_s) and each light's count at the eye.
+  void build(const FrameInputs& inputs);
+  const std::vector<kit::CountedTriangle>& triangles() const { return triangles_; }
+  const std::vector<int>& eye_counts() const { return eye_counts_; }
+
+  // Counters for the report: caster triangles, planes, silhouette and
+  // boundary edges, loops, build_s, and per caster whether it is closed (its
+  // planes are its silhouette) or open (the edges of its triangles' own volumes).
+  std::vector<std::pair<std::string, double>> stats() const;
+
+private:
+  struct Caster {
+    int mesh = 0;
+    geometry::CasterTopology topology;
+    std::vector<glm::vec3> world;  // this frame's welded positions
+  };
+  void move_casters(const FrameInputs& inputs);
+  void add_planes(const std::vector<geometry::ShadowPlane>& planes, const Light& light, int index);
+
+  std::vector<Caster> casters_;
+  std::vector<geometry::ShadowPlane> planes_;  // of one light, reused
+  std::vector<kit::CountedTriangle> triangles_;
+  std::vector<int> eye_counts_;
+  double build_s_ = 0.0;
+  int plane_count_ = 0, silhouette_edges_ = 0, boundary_edges_ = 0, loops_ = 0;
+};
+
+}  // namespace airlight::methods
