@@ -369,6 +369,53 @@ Scene biri_media() {
   return s;
 }
 
+// Nilsson 2008 §6 "Parallel": the light nearly parallel to the view, so that
+// the shafts run away from the eye (where sampling needs the most planes): a
+// directional beam from behind and above the camera through a frame of bars
+// and boxes, into a haze.
+Scene nilsson_parallel() {
+  Scene s;
+  s.name = "nilsson_parallel";
+  s.camera.position = {0.0f, 2.0f, 8.0f};
+  s.camera.look_at = {0.0f, 1.6f, 0.0f};
+  s.medium.sigma_s = Color(0.06f);
+  s.medium.sigma_a = Color(0.01f);
+  Light sun;
+  sun.type = LightType::directional;
+  sun.direction = glm::normalize(glm::vec3(0.1f, -0.35f, -1.0f));
+  sun.irradiance = Color(6.0f);
+  sun.gobo_up = {0.0f, 1.0f, 0.0f};
+  sun.beam = beam_through(sun, {{-2.0f, 1.0f, 3.9f}, {2.0f, 4.0f, 4.1f}}, {{-6.0f, -0.2f, -8.0f}, {6.0f, 6.0f, 6.0f}},
+                          0.05f);
+  s.lights.push_back(sun);
+  s.meshes.push_back(floor_slab(8.0f, Color(0.5f)));
+  for (int k = 0; k < 3; ++k)  // bars across the beam's mouth
+    s.meshes.push_back(place(make_box({-2.0f, 1.6f + 0.8f * k, 3.0f}, {2.0f, 1.75f + 0.8f * k, 3.15f}), Color(0.6f),
+                             "bar"));
+  s.meshes.push_back(place(make_box({-0.9f, 0.0f, -1.0f}, {-0.3f, 1.2f, -0.4f}), Color(0.7f), "box"));
+  s.meshes.push_back(place(make_sphere({0.8f, 1.0f, -2.0f}, 0.5f, 16), Color(0.7f), "sphere"));
+  return s;
+}
+
+// Nilsson 2008 §6 "Multiple": many objects under one spot from above, so that
+// the beam tree grows: a 5×5 grid of boxes and spheres at two heights.
+Scene nilsson_multiple() {
+  Scene s;
+  s.name = "nilsson_multiple";
+  s.camera.position = {0.0f, 2.8f, 9.0f};
+  s.camera.look_at = {0.0f, 2.0f, 0.0f};
+  s.medium.sigma_s = Color(0.08f);
+  s.lights.push_back(spot({0.0f, 6.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, Color(400.0f), 35.0f));
+  s.meshes.push_back(floor_slab(8.0f, Color(0.6f)));
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) {
+      const glm::vec3 c(-2.0f + 1.0f * i, (i + j) % 2 ? 3.4f : 2.6f, -2.0f + 1.0f * j);
+      Mesh mesh = (i + j) % 2 ? make_sphere(c, 0.22f, 12) : make_box(c - glm::vec3(0.2f), c + glm::vec3(0.2f));
+      s.meshes.push_back(place(std::move(mesh), Color(0.7f), (i + j) % 2 ? "sphere" : "box"));
+    }
+  return s;
+}
+
 struct Builtin {
   std::function<Scene()> make;
   const char* description;
@@ -380,7 +427,9 @@ const std::map<std::string, Builtin>& builtins() {
       {"biri_sphere", {biri_sphere, "Biri 2006 §6: a sphere (32-edge silhouette) beyond a spot, its shadow cutting the beam"}},
       {"biri_pens", {biri_pens, "Biri 2006 Fig. 7a: two crossing pens under a spot, their shadow volumes overlapping"}},
       {"biri_media", {biri_media, "Biri 2006 Fig. 7b: a box under a spot inside red, green and blue bounded media"}},
-      {"nilsson_toplight", {nilsson_toplight, "Nilsson 2008 §6: a spot from above over simple objects, simplified light model"}},
+      {"nilsson_toplight", {nilsson_toplight, "Nilsson 2008 §6 Toplight: a spot from above, orthogonal to the view, over simple objects, simplified light model"}},
+      {"nilsson_parallel", {nilsson_parallel, "Nilsson 2008 §6 Parallel: a directional beam nearly along the view through bars, over a box and a sphere"}},
+      {"nilsson_multiple", {nilsson_multiple, "Nilsson 2008 §6 Multiple: 25 boxes and spheres in a grid under a spot from above"}},
       {"stage", {stage, "Dobashi 2000 Fig. 7b: five coloured stage spots, some with gobos, seen from the audience, lamps in view"}},
       {"stained_glass", {stained_glass, "Dobashi 2000 Fig. 8b: a sun beam through a stained-glass window into a dusty room"}},
       {"three_lights", {three_lights, "a point light in a cage of pillars, a spot on a sphere and a low sun"}}};
