@@ -53,10 +53,13 @@ void LitIntervalPass::prepare() {
   node_count_ = gpu::make_buffer(2 * sizeof(GLuint), nullptr);
 }
 
-std::string LitIntervalPass::defines() const {
+std::string lit_interval_defines() {
   return "#define BINDING_COUNTED " + std::to_string(counted_binding) + "\n#define BINDING_NODES " +
-         std::to_string(nodes_binding) + "\n#define BINDING_NODE_COUNT " + std::to_string(node_count_binding) +
-         "\n#define SAMPLES " + std::to_string(samples_) + "\n";
+         std::to_string(nodes_binding) + "\n#define BINDING_NODE_COUNT " + std::to_string(node_count_binding) + "\n";
+}
+
+std::string LitIntervalPass::defines() const {
+  return lit_interval_defines() + "#define SAMPLES " + std::to_string(samples_) + "\n";
 }
 
 void LitIntervalPass::allocate_pool(size_t nodes) {

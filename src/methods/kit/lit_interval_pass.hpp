@@ -34,6 +34,10 @@ glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dve
 // capacity and samples: the settings of the pass (in front of a method's own).
 std::vector<SettingSpec> lit_interval_settings();
 
+// "#define BINDING_COUNTED n" and the other bindings of lit_intervals.glsl: the
+// counted triangles at binding::first_free_storage, the node pool after them.
+std::string lit_interval_defines();
+
 class LitIntervalPass {
 public:
   explicit LitIntervalPass(const Settings& settings);

@@ -80,6 +80,18 @@ TEST(ShadowPlanes, CameraInsideAShadowVolume) {
   expect_matches_reference(scene);
 }
 
+// The eye 0.1 m outside the sphere's shadow volume looking into it, with the
+// near plane 0.5 m away: the planes between the eye and the near plane are
+// drawn all the same (no near clipping), so the count is right from the eye.
+TEST(ShadowPlanes, NearPlaneDoesNotCutThePlanes) {
+  Scene scene = builtin_scene("biri_sphere");
+  scene.name = "biri_sphere_near_plane";
+  scene.camera.position = {1.0f, 2.0f, 0.0f};
+  scene.camera.look_at = {-1.0f, 1.6f, 0.6f};
+  scene.camera.near = 0.5f;
+  expect_matches_reference(scene);
+}
+
 // Shadow in shadow (Biri §5.1.4, Fig. 4): a wide slab high under the spot, a
 // box in its shadow, a sphere in both shadows and a bar crossing them, so that
 // many view rays enter and leave several volumes, nested and overlapping.
