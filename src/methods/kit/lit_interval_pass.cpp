@@ -51,6 +51,11 @@ void LitIntervalPass::prepare() {
   fbo_ = gpu::make_framebuffer();
   no_vertices_ = gpu::make_vertex_array();  // the triangles come from their buffer by gl_VertexID
   node_count_ = gpu::make_buffer(2 * sizeof(GLuint), nullptr);
+  if (epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
+    GLuint id = 0;
+    glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
+    invocations_ = gpu::Query(id);
+  }
 }
 
 std::string lit_interval_defines() {
@@ -107,6 +112,7 @@ void LitIntervalPass::draw(const SceneFrame& frame, size_t triangle_count) {
   const GLuint counters[2] = {0, static_cast<GLuint>(std::min<size_t>(node_capacity_, end_of_list))};
   glNamedBufferSubData(node_count_.id(), 0, sizeof(counters), counters);
   crossings_ = 0;
+  fragments_ = 0.0;
   if (triangle_count == 0) return;
   const gpu::Program& program = gpu::cached_program(
       {{GL_VERTEX_SHADER, "methods/kit/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/crossings.frag.glsl"}},
@@ -123,7 +129,14 @@ void LitIntervalPass::draw(const SceneFrame& frame, size_t triangle_count) {
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_CLAMP);
   glBindVertexArray(no_vertices_.id());
+  if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count));
+  if (invocations_) {
+    glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+    GLuint64 count = 0;
+    glGetQueryObjectui64v(invocations_.id(), GL_QUERY_RESULT, &count);
+    fragments_ = static_cast<double>(count);
+  }
   glDisable(GL_DEPTH_CLAMP);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -142,7 +155,9 @@ void LitIntervalPass::resolve(const SceneFrame& frame, const std::vector<int>& e
 }
 
 std::vector<std::pair<std::string, double>> LitIntervalPass::stats() const {
-  return {{"crossings", static_cast<double>(crossings_)}, {"redraws", static_cast<double>(redraws_)}};
+  return {{"crossings", static_cast<double>(crossings_)},
+          {"fragments", fragments_},
+          {"redraws", static_cast<double>(redraws_)}};
 }
 
 }  // namespace airlight::kit

@@ -50,7 +50,9 @@ public:
   void run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles, const std::vector<int>& eye_counts,
            const gpu::Texture& target, gpu::PassTimer& timer);
 
-  // crossings (drawn into the lists) and redraws (the pool grown this frame).
+  // crossings (drawn into the lists), fragments (shaded by the last draw of
+  // the triangles; 0 without pipeline statistics) and redraws (the pool grown
+  // this frame).
   std::vector<std::pair<std::string, double>> stats() const;
 
 private:
@@ -67,7 +69,9 @@ private:
   gpu::Framebuffer fbo_;
   gpu::VertexArray no_vertices_;
   int width_ = 0, height_ = 0;
+  gpu::Query invocations_;  // fragment shader invocations (GL_ARB_pipeline_statistics_query), when there
   unsigned crossings_ = 0;
+  double fragments_ = 0.0;
   int redraws_ = 0;
 };
 

@@ -6,7 +6,7 @@
 // The lit intervals come from counting (lit_intervals.glsl): light i's count
 // starts at the eye's (computed on the CPU per frame) and changes by each
 // crossing's signed weight in the order of t; the ray is lit by i where the
-// count is 0. Counting is exact whatever the order or nesting of the volumes
+// count is 0 (or less). Counting is exact whatever the order or nesting of the volumes
 // and wherever the eye is, which Biri gets from drawing back to front with the
 // stencil; here each light walks the pixel's crossings in the order of t
 // (next_event). Crossings at equal t give empty intervals, whose Γ is 0.
@@ -172,22 +172,26 @@ vec3 lit_gamma(int i, vec3 eye, vec3 dir, float a, float b) {
   return unoccluded_airlight(i, eye, dir, a, b) * interval_correction(i, eye, dir, a, b);
 }
 
-// Light i along [0, d]: Γ over the stretches where its count is 0.
+// Light i along [0, d]: Γ over the stretches where its count is 0 or less.
+// Counts are never below 0 in exact arithmetic (shadow volumes contain a
+// point a non-negative number of times; the lit pyramids of a beam tree do
+// not overlap); where pyramids overlap by their ε-thick planes, a point is in
+// two and the count reads −1, which is lit all the same.
 vec3 light_airlight(int i, uint head, vec3 dir, float d) {
   vec3 eye = frame.eye;
   int count = eye_counts[i];
-  float start = 0.0;  // where the current lit stretch began (when count == 0)
+  float start = 0.0;  // where the current lit stretch began (when count <= 0)
   float t = -1.0;     // the last event: before every crossing (all have t > 0)
   vec3 sum = vec3(0.0);
   // Runtime bounds: the crossings along this ray.
   for (uint node = next_event(i, head, t, 0u); node != END_OF_LIST; node = next_event(i, head, t, node)) {
     t = node_t(node);
     int after = count + crossing_change(nodes[3u * node + 1u]);
-    if (count == 0 && after != 0) sum += lit_gamma(i, eye, dir, start, t);
-    if (count != 0 && after == 0) start = t;
+    if (count <= 0 && after > 0) sum += lit_gamma(i, eye, dir, start, t);
+    if (count > 0 && after <= 0) start = t;
     count = after;
   }
-  if (count == 0) sum += lit_gamma(i, eye, dir, start, d);
+  if (count <= 0) sum += lit_gamma(i, eye, dir, start, d);
   return sum;
 }
 
