@@ -4,6 +4,7 @@
 
 #include <airlight/error.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -863,6 +864,63 @@ TEST(BeamTree, BackplateClosesEveryLightsInfluence) {
   const std::vector<BeamPolygon> sun_face = influence_backplate(sun, kFar);
   ASSERT_EQ(sun_face.size(), 1u);
   EXPECT_NEAR(coverage(sun, sun_face[0].vertices), 4.0 * kFar * kFar, 1e-12);
+}
+
+// ---- Scale ----
+
+// n small triangles in [-1, 1]³, sized so that each crosses about one other.
+std::vector<BeamPolygon> small_soup(int n, Rng& rng) {
+  const double size = 1.5 / std::cbrt(static_cast<double>(n));
+  Soup s;
+  for (int k = 0; k < n; ++k) {
+    const glm::dvec3 c = in_box(rng, 1.0);
+    s.add({c + size * in_box(rng, 1.0), c + size * in_box(rng, 1.0), c + size * in_box(rng, 1.0)});
+  }
+  return s.polygons;
+}
+
+// A unit UV sphere of about n triangles (two per grid quad; the poles' are zero-area).
+std::vector<BeamPolygon> uv_sphere(int n) {
+  const int segments = std::max(4, static_cast<int>(std::sqrt(static_cast<double>(n)))), rows = std::max(2, n / (2 * segments));
+  const auto at = [&](int k, int j) {
+    const double theta = std::numbers::pi * k / rows, phi = 2.0 * std::numbers::pi * j / segments;
+    return glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+  };
+  Soup s;
+  for (int k = 0; k < rows; ++k)
+    for (int j = 0; j < segments; ++j) {
+      s.add({at(k, j), at(k + 1, j), at(k + 1, j + 1)});
+      s.add({at(k, j), at(k + 1, j + 1), at(k, j + 1)});
+    }
+  return s.polygons;
+}
+
+// Build times, printed (not asserted): the sort's tree is O(log n) deep, and a beam tree over
+// triangles in front-to-back order stays a few hundred nodes deep here.
+TEST(BeamTree, BuildsAHundredThousandTrianglesAndItsVisibleSetCoversTheSphereOnce) {
+  std::printf("%-6s %7s %9s %8s %8s %8s %6s %5s %9s\n", "scene", "tris", "build s", "nodes", "visible", "pieces", "depth",
+              "thin", "4π off");
+  for (const bool sphere : {false, true})
+    for (const int n : {100, 1000, 10000, 100000}) {
+      Rng rng(static_cast<unsigned>(n));
+      Light light;
+      light.position = sphere ? glm::vec3(2.5f, 1.5f, 0.7f) : glm::vec3(0.3f, 0.2f, 0.1f);
+      const std::vector<BeamPolygon> scene = with_backplate(sphere ? uv_sphere(n) : small_soup(n, rng), light);
+      const double epsilon = beam_epsilon(light_origin(light), scene);
+      const auto start = std::chrono::steady_clock::now();
+      const BeamTree tree(light_origin(light), scene, epsilon);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      // As VisibleSetIsLitAndCoversTheInfluenceOnce: 4π, off by at most ε/R times the perimeters.
+      double covered = 0.0, perimeter = 0.0;
+      for (const BeamPolygon& piece : tree.visible_set()) {
+        covered += coverage(light, piece.vertices);
+        perimeter += seen_perimeter(light, piece.vertices);
+      }
+      EXPECT_NEAR(covered, 4.0 * std::numbers::pi, epsilon / far_radius(light, scene) * perimeter) << n;
+      std::printf("%-6s %7zu %9.3f %8d %8zu %8d %6d %5d %9.1e\n", sphere ? "sphere" : "soup", scene.size() - 6, seconds,
+                  tree.node_count(), tree.visible_set().size(), tree.stats().sorted_pieces, tree.stats().depth,
+                  tree.stats().thin_pieces, covered - 4.0 * std::numbers::pi);
+    }
 }
 
 }  // namespace
