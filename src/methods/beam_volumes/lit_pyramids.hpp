@@ -1,0 +1,48 @@
+#pragma once
+// Nilsson 2008 §3.2 and ch. 4: per light, the beam tree of every caster's
+// triangles (geometry/beam_tree.hpp) and its visible set — the polygons the
+// light sees first, the influence volume's backplate included — as the
+// pyramids (prisms for a directional light) between the light and each of
+// them: together, exactly the light's lit region. Their faces are the
+// triangles the kit's lit-interval pass counts.
+#include "geometry/beam_tree.hpp"
+#include "methods/kit/lit_interval_pass.hpp"
+
+#include <airlight/method.hpp>
+#include <airlight/scene.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace airlight::methods {
+
+class ConformingSet;
+
+class LitPyramids {
+public:
+  // The casters' triangles (Mesh::casts_shadows), in object space.
+  void prepare(const Scene& scene);
+
+  // The frame's beam trees (timed as build_s) and pyramids, and each light's
+  // count at the eye: 0 where the eye is lit, 1 where not.
+  void build(const FrameInputs& inputs);
+  const std::vector<kit::CountedTriangle>& triangles() const { return triangles_; }
+  const std::vector<int>& eye_counts() const { return eye_counts_; }
+
+  // beam_tree_nodes, visible_polygons, pyramid_faces, build_s.
+  std::vector<std::pair<std::string, double>> stats() const;
+
+private:
+  std::vector<geometry::BeamPolygon> world_polygons(const FrameInputs& inputs) const;
+  void add_pyramids(const ConformingSet& set, const Light& light, int index);
+  void add_face(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, int index);
+
+  std::vector<const Mesh*> casters_;
+  std::vector<int> caster_meshes_;  // index into Scene::meshes per caster
+  std::vector<kit::CountedTriangle> triangles_;
+  std::vector<int> eye_counts_;
+  double build_s_ = 0.0;
+  int nodes_ = 0, visible_ = 0;
+};
+
+}  // namespace airlight::methods
