@@ -1,6 +1,7 @@
 #pragma once
 // The scene model (docs/design.md §1, §4). Every object is a triangle mesh by the time
 // a scene is loaded; phase-function sums are flattened into weighted lobes.
+#include <airlight/box.hpp>
 #include <airlight/image.hpp>
 #include <filesystem>
 #include <glm/vec2.hpp>
@@ -92,6 +93,10 @@ struct Mesh {
   std::vector<glm::uvec3> triangles; // indices into positions
   Color albedo{0.7f};
   bool casts_shadows = true;         // false: light passes through it (it still ends view rays)
+  // Nilsson §5.1's bounding volumes as the file gives them, in world space (moved with the
+  // object): the outer one encloses every vertex, the inner one lies inside the closed mesh.
+  // None: geometry/bounding_volumes computes them.
+  std::optional<OrientedBox> outer_box, inner_box;
 };
 
 struct Scene {

@@ -200,6 +200,12 @@ void apply(const Transform& transform, Mesh& mesh) {
   for (glm::vec3& p : mesh.positions) p = r * (transform.scale * p) + transform.translate;
   // A uniform scale leaves normals' directions alone; renormalize for rounding.
   for (glm::vec3& n : mesh.normals) n = glm::normalize(r * n);
+  for (std::optional<OrientedBox>* box : {&mesh.outer_box, &mesh.inner_box}) {
+    if (!*box) continue;
+    (*box)->center = r * (transform.scale * (*box)->center) + transform.translate;
+    (*box)->axes = r * (*box)->axes;
+    (*box)->half *= transform.scale;
+  }
 }
 
 }  // namespace airlight::scene_mesh

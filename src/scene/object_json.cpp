@@ -1,13 +1,17 @@
 // "objects" entries (docs/design.md §4). Every object has the optional keys
 //   translate [x,y,z], rotate_deg [rx,ry,rz] (about world X, then Y, then Z),
 //   scale s (> 0, uniform), albedo (colour in [0,1], default 0.7), name,
-//   casts_shadows (true or false, default true: whether it shadows the lights);
+//   casts_shadows (true or false, default true: whether it shadows the lights),
+//   outer_box {min, max} (encloses every vertex), inner_box {min, max} (inside the mesh, which
+//   must be closed once welded by exact position): Nilsson §5.1's bounding volumes, in the
+//   object's own coordinates before its transform, which then carries them (oriented boxes);
 // and either "mesh": "file.obj" or "shape" with the shape's keys:
 //   box       min, max
 //   sphere    radius; center [0,0,0]; segments 48 (around; segments/2 rings)
 //   plane     size [sx, sz]; center [0,0,0]; normal [0,1,0]
 //   cylinder  radius, height (along +y); base [0,0,0] (centre of the bottom cap); segments 48
 //   teapot    segments 8 (quads per patch edge); 1 unit tall on y = 0 at scale 1
+#include "core/solid.hpp"
 #include "scene/mesh_build.hpp"
 #include "scene/scene_parse.hpp"
 #include "scene/shapes.hpp"
@@ -21,10 +25,16 @@ namespace {
 
 using namespace scene_mesh;
 
-Mesh read_box(JsonObject& o) {
+// The axis-aligned box of a "min" and a "max", as a box shape and a bounding volume give it.
+OrientedBox read_min_max(JsonObject& o) {
   const glm::vec3 min = o.required("min").vec3(), max = o.required("max").vec3();
   if (!glm::all(glm::lessThan(min, max))) o.fail("max", "must exceed min on every axis");
-  return make_box(min, max);
+  return OrientedBox{0.5f * (min + max), glm::mat3(1.0f), 0.5f * (max - min)};
+}
+
+Mesh read_box(JsonObject& o) {
+  const OrientedBox box = read_min_max(o);
+  return make_box(box.center - box.half, box.center + box.half);
 }
 
 Mesh read_sphere(JsonObject& o) {
@@ -77,6 +87,32 @@ Transform read_transform(JsonObject& o) {
   return t;
 }
 
+// An object's bounding volume (Nilsson §5.1), checked against its mesh in the object's own
+// coordinates, where the box is axis-aligned and nothing has been rounded by the transform.
+std::optional<OrientedBox> read_bounding_box(JsonObject& o, std::string_view name,
+                                             void (*check)(const Mesh&, const OrientedBox&,
+                                                           const JsonNode&),
+                                             const Mesh& mesh) {
+  const auto node = o.optional(name);
+  if (!node) return std::nullopt;
+  JsonObject b(*node);
+  const OrientedBox box = read_min_max(b);
+  b.finish();
+  check(mesh, box, *node);
+  return box;
+}
+
+void check_outer(const Mesh& mesh, const OrientedBox& box, const JsonNode& node) {
+  for (const glm::vec3& p : mesh.positions)
+    if (glm::any(glm::greaterThan(glm::abs(p - box.center), box.half)))
+      node.fail("does not enclose the object");
+}
+
+void check_inner(const Mesh& mesh, const OrientedBox& box, const JsonNode& node) {
+  if (!solid::closed(mesh.positions, mesh.triangles)) node.fail("an open mesh has no inside");
+  if (!solid::box_inside(mesh.positions, mesh.triangles, box)) node.fail("is not inside the object");
+}
+
 // Extreme sizes and transforms can overflow or collapse float geometry.
 void check_placed(const Mesh& mesh, const JsonNode& node) {
   if (mesh.triangles.empty()) node.fail("is too small to make any triangle");
@@ -94,6 +130,8 @@ Mesh read_object(const JsonNode& node, const std::filesystem::path& base_dir) {
   JsonObject o(node);
   if (o.has("shape") == o.has("mesh")) node.fail("needs exactly one of \"shape\" and \"mesh\"");
   Mesh mesh = o.has("shape") ? read_shape(o) : read_mesh_file(o, base_dir);
+  mesh.outer_box = read_bounding_box(o, "outer_box", check_outer, mesh);
+  mesh.inner_box = read_bounding_box(o, "inner_box", check_inner, mesh);
   const Transform transform = read_transform(o);
   mesh.albedo = o.color_or("albedo", closed(0, 1), mesh.albedo);
   mesh.casts_shadows = o.boolean_or("casts_shadows", true);

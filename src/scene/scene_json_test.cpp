@@ -114,6 +114,24 @@ TEST(SceneJson, ObjectsBecomePlacedMeshes) {
   for (const glm::vec3& n : s.meshes[3].normals) expect_vec(n, {0, 0, 1});
 }
 
+// The boxes are read in the object's coordinates and carried by its transform: the sphere's
+// outer box, off-centre by 0.1 along x, turned 90° about y (x → −z) and moved by (1, 0, 0).
+TEST(SceneJson, BoundingBoxesMoveWithTheirObject) {
+  Json j = valid_scene();
+  j["objects"][1]["outer_box"] = {{"min", {-0.5, 0.5, -0.5}}, {"max", {0.7, 1.5, 0.5}}};
+  j["objects"][1]["inner_box"] = {{"min", {-0.2, 0.8, -0.2}}, {"max", {0.2, 1.2, 0.2}}};
+  j["objects"][1]["rotate_deg"] = {0, 90, 0};
+  j["objects"][1]["translate"] = {1, 0, 0};
+  const Mesh& sphere = parse(j).meshes[1];
+  ASSERT_TRUE(sphere.outer_box && sphere.inner_box);
+  expect_vec(sphere.outer_box->center, {1, 1, -0.1f});
+  expect_vec(sphere.outer_box->axes[0], {0, 0, -1});
+  expect_vec(sphere.outer_box->half, {0.6f, 0.5f, 0.5f});
+  expect_vec(sphere.inner_box->center, {1, 1, 0});
+  expect_vec(sphere.inner_box->half, glm::vec3(0.2f));
+  EXPECT_FALSE(parse(valid_scene()).meshes[1].outer_box);  // none unless given
+}
+
 TEST(SceneJson, AnObjectMayCastNoShadow) {
   Json j = valid_scene();
   j["objects"][1]["casts_shadows"] = false;
@@ -247,6 +265,7 @@ struct BadCase {
   const char* pointer;
   const char* value;
   const char* key;
+  const char* message = "";  // what the error must say, when a row checks it
 };
 
 void PrintTo(const BadCase& c, std::ostream* out) { *out << c.name; }
@@ -259,7 +278,7 @@ TEST_P(BadScene, NamesTheFileAndTheKey) {
   const Json::json_pointer pointer(c.pointer);
   if (c.value) j[pointer] = Json::parse(c.value);
   else j[pointer.parent_pointer()].erase(pointer.back());
-  EXPECT_TRUE(throws_input_error([&] { parse(j); }, inline_file(), c.key));
+  EXPECT_TRUE(throws_input_error([&] { parse(j); }, inline_file(), c.key, c.message));
 }
 
 constexpr const char* erase = nullptr;
@@ -376,6 +395,26 @@ const BadCase kOutOfRange[] = {
      R"({"shape": "sphere", "center": [1, 1, 1], "radius": 1e-30})", "objects[1]"},
 };
 
+// Nilsson §5.1's bounding volumes: objects[1] is a sphere of radius 0.5 about (0, 1, 0),
+// objects[2] the box (−5, −0.1, −5)–(5, 0, 5), objects[3] a plane (open).
+const BadCase kBoundingBoxes[] = {
+    {"OuterBoxCutsTheObject", "/objects/2/outer_box", R"({"min": [-5, -0.1, -5], "max": [4, 0, 5]})",
+     "objects[2].outer_box", "does not enclose the object"},
+    {"InnerBoxCrossesTheObject", "/objects/1/inner_box",
+     R"({"min": [-0.2, 0.8, -0.2], "max": [0.2, 1.6, 0.2]})", "objects[1].inner_box",
+     "is not inside the object"},
+    {"InnerBoxBesideTheObject", "/objects/1/inner_box", R"({"min": [2, 2, 2], "max": [3, 3, 3]})",
+     "objects[1].inner_box", "is not inside the object"},
+    {"InnerBoxOfAnOpenMesh", "/objects/3/inner_box",
+     R"({"min": [-0.1, -0.1, -3.1], "max": [0.1, 0.1, -2.9]})", "objects[3].inner_box",
+     "an open mesh has no inside"},
+    {"BoundingBoxMinAboveMax", "/objects/1/outer_box", R"({"min": [1, 2, 1], "max": [-1, 0, -1]})",
+     "objects[1].outer_box.max", "must exceed min on every axis"},
+    {"BoundingBoxUnknownKey", "/objects/1/inner_box",
+     R"({"min": [-0.1, 0.9, -0.1], "max": [0.1, 1.1, 0.1], "center": [0, 1, 0]})",
+     "objects[1].inner_box.center"},
+};
+
 const BadCase kZeroVectors[] = {
     {"SpotDirection", "/lights/1/direction", "[0, 0, 0]", "lights[1].direction"},
     {"DirectionalDirection", "/lights/2/direction", "[0, 0, 0]", "lights[2].direction"},
@@ -457,6 +496,7 @@ INSTANTIATE_TEST_SUITE_P(ZeroVector, BadScene, ::testing::ValuesIn(kZeroVectors)
 INSTANTIATE_TEST_SUITE_P(ObjectOrLight, BadScene, ::testing::ValuesIn(kObjectsAndLights),
                          case_name);
 INSTANTIATE_TEST_SUITE_P(Beam, BadScene, ::testing::ValuesIn(kBeams), case_name);
+INSTANTIATE_TEST_SUITE_P(BoundingBox, BadScene, ::testing::ValuesIn(kBoundingBoxes), case_name);
 
 // ---- bad input the table cannot express ------------------------------------
 

@@ -20,16 +20,22 @@ inline std::filesystem::path data_dir() {
   return std::filesystem::path(AIRLIGHT_TEST_DATA) / "scenes";
 }
 
-// Runs f and checks that it throws InputError naming `file` and `key`.
+// Runs f and checks that it throws InputError naming `file` and `key`, its message ending
+// in `message` (any message when empty).
 template <class F>
-::testing::AssertionResult throws_input_error(F f, const std::string& file, const std::string& key) {
+::testing::AssertionResult throws_input_error(F f, const std::string& file, const std::string& key,
+                                              const std::string& message = "") {
   try {
     f();
   } catch (const InputError& e) {
-    if (e.file() == file && e.key() == key) return ::testing::AssertionSuccess();
+    const std::string what = e.what();
+    const bool said = what.size() >= message.size() &&
+                      what.compare(what.size() - message.size(), message.size(), message) == 0;
+    if (e.file() == file && e.key() == key && said) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << "file \"" << e.file() << "\", key \"" << e.key()
                                          << "\" (" << e.what() << "); expected file \"" << file
-                                         << "\", key \"" << key << "\"";
+                                         << "\", key \"" << key << "\", message \"" << message
+                                         << "\"";
   }
   return ::testing::AssertionFailure() << "no InputError thrown";
 }
