@@ -187,7 +187,8 @@ TEST(BoundingVolumes, InnerCubeOfASphereAndABox) {
   ASSERT_TRUE(s.inner);
   for (int k = 0; k < 8; ++k) EXPECT_LT(glm::distance(s.inner->corner(k), glm::vec3(1, 2, 3)), 2.0f);
   std::printf("sphere r 2: inner cube half %.6f (r/sqrt3 = %.6f)\n", s.inner->half.x, 2.0 / std::sqrt(3.0));
-  EXPECT_GT(s.inner->half.x, 0.9f * 2.0f / std::sqrt(3.0f));
+  // The best cube in the ball has half r/√3; the 32×16 facets sit inside the ball by under 2 %.
+  EXPECT_GT(s.inner->half.x, 0.98f * 2.0f / std::sqrt(3.0f));
 
   const BoundingVolumes b = bounding_volumes(box_mesh({-1, 0, 0}, {2, 1, 3}));
   ASSERT_TRUE(b.inner);
