@@ -122,7 +122,8 @@ TEST(SceneJson, BoundingBoxesMoveWithTheirObject) {
   j["objects"][1]["inner_box"] = {{"min", {-0.2, 0.8, -0.2}}, {"max", {0.2, 1.2, 0.2}}};
   j["objects"][1]["rotate_deg"] = {0, 90, 0};
   j["objects"][1]["translate"] = {1, 0, 0};
-  const Mesh& sphere = parse(j).meshes[1];
+  const Scene scene = parse(j);
+  const Mesh& sphere = scene.meshes[1];
   ASSERT_TRUE(sphere.outer_box && sphere.inner_box);
   expect_vec(sphere.outer_box->center, {1, 1, -0.1f});
   expect_vec(sphere.outer_box->axes[0], {0, 0, -1});
