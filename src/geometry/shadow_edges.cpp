@@ -221,9 +221,4 @@ int shadow_count(const CasterTopology& caster, std::span<const glm::vec3> world,
   return count;
 }
 
-glm::vec3 shadow_plane_normal(const glm::vec3& a, const glm::vec3& b, const LightOrigin& light) {
-  if (light.directional) return glm::cross(light.direction, b - a);
-  return glm::cross(a - light.position, b - light.position);
-}
-
 }  // namespace airlight::geometry

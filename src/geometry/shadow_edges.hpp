@@ -65,7 +65,7 @@ struct LightOrigin {
 LightOrigin light_origin(const Light& light);
 
 // A plane: the wedge W(a, b), world space, a and b the edge's ends in CasterTopology::edges'
-// order (a < b by welded index), so that its n is shadow_plane_normal(a, b, light).
+// order (a < b by welded index), so that its n is (a − L) × (b − L), or D × (b − a).
 struct ShadowPlane {
   glm::vec3 a, b;
   int weight;
@@ -94,8 +94,5 @@ int shadow_plane_loops(const CasterTopology& caster, std::span<const glm::vec3> 
 // (Möller–Trumbore): the count at the eye, one point per light and frame.
 int shadow_count(const CasterTopology& caster, std::span<const glm::vec3> world,
                  const LightOrigin& light, const glm::vec3& p);
-
-// n of the plane through the edge (a, b) and the light, in float as the GPU computes it.
-glm::vec3 shadow_plane_normal(const glm::vec3& a, const glm::vec3& b, const LightOrigin& light);
 
 }  // namespace airlight::geometry

@@ -25,18 +25,6 @@ FrameImages beam_volumes(const Scene& scene, const std::vector<std::string>& set
   return kit::test::render(find_method("beam_volumes"), scene, settings, width, height);
 }
 
-double stat(const FrameImages& frame, const std::string& name) {
-  for (const auto& [key, value] : frame.stats)
-    if (key == name) return value;
-  return -1.0;
-}
-
-// The reference with 256 first segments (as shadow_planes_test: 32 miss thin
-// lit slivers beside a spot's apex).
-Image exact_reference(const Scene& scene) {
-  return kit::test::render(find_method("reference"), scene, {"min_segments=256"}, width, height).airlight;
-}
-
 TEST(BeamVolumes, RegisteredWithItsSettings) {
   std::set<std::string> names;
   for (const SettingSpec& s : find_method("beam_volumes").settings) names.insert(s.name);
@@ -51,7 +39,7 @@ TEST(BeamVolumes, CameraInsideTheLitVolume) {
   scene.camera.position = {0.6f, 4.0f, 0.8f};
   scene.camera.look_at = {0.0f, 1.0f, 0.0f};
   const FrameImages frame = beam_volumes(scene);
-  const ImageError e = compare_images(frame.airlight, exact_reference(scene));
+  const ImageError e = compare_images(frame.airlight, fine_reference_airlight(scene, width, height));
   std::printf("eye in the lit volume: rRMSE %.5f, max abs %.5f\n", e.rel_rmse, e.max_abs);
   EXPECT_LT(e.rel_rmse, 0.01);  // exact shadows: Γ and the reference's quadrature
   EXPECT_GT(stat(frame, "beam_tree_nodes"), 0.0);
@@ -69,7 +57,7 @@ TEST(BeamVolumes, SignedSumAndIntervalsAgreeWithALightInView) {
   scene.name = "biri_sphere_apex";
   scene.camera.position = {0.6f, 4.0f, 2.0f};
   scene.camera.look_at = {0.0f, 4.5f, 0.0f};
-  const Image ref = exact_reference(scene);
+  const Image ref = fine_reference_airlight(scene, width, height);
   const ImageError counted = compare_images(beam_volumes(scene).airlight, ref);
   const ImageError summed = compare_images(beam_volumes(scene, {"accumulate=signed"}).airlight, ref);
   std::printf("apex in view: intervals rRMSE %.6f max abs %.6f, signed rRMSE %.6f max abs %.6f\n", counted.rel_rmse,

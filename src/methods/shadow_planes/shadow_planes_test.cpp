@@ -29,27 +29,14 @@ FrameImages shadow_planes(const Scene& scene, const std::vector<std::string>& se
   return kit::test::render(find_method("shadow_planes"), scene, settings, w, h);
 }
 
-double stat(const FrameImages& frame, const std::string& name) {
-  for (const auto& [key, value] : frame.stats)
-    if (key == name) return value;
-  return -1.0;
-}
-
-// The reference with 256 first segments instead of 32: at 80×60 two pixels of
-// biri_sphere whose rays pass a thin lit sliver beside the spot's apex got 3%
-// too much from 32 (0.3663 against 0.3563; 256 segments, raymarch at N = 4096
-// and this method agree on 0.356).
-Image exact_reference(const Scene& scene, int w, int h) {
-  return kit::test::render(find_method("reference"), scene, {"min_segments=256"}, w, h).airlight;
-}
-
+// Against the reference with 256 first segments (fine_reference_airlight).
 // Exact up to Γ's accuracy and the reference's quadrature (rel_tol 1e-3): the
 // quality table's bound, and a max-abs bound of 0.5% of the reference's peak
 // (a pixel on a shadow edge: the reference's segments end at the edges it finds
 // to rel_tol, Γ integrates to the exact crossing).
 void expect_matches_reference(const Scene& scene, int w = width, int h = height,
                               const std::vector<std::string>& settings = {}) {
-  const Image ref = exact_reference(scene, w, h);
+  const Image ref = fine_reference_airlight(scene, w, h);
   const ImageError e = compare_images(shadow_planes(scene, settings, w, h).airlight, ref);
   float peak = 0.0f;
   for (const glm::vec3& p : ref.pixels) peak = std::max({peak, p.r, p.g, p.b});
@@ -196,10 +183,10 @@ TEST(ShadowPlanes, ACasterThatCastsNoShadowLetsTheLightThrough) {
   scene.meshes[1].casts_shadows = false;
   expect_matches_reference(scene);
   EXPECT_EQ(stat(shadow_planes(scene), "caster1_silhouettes"), -1.0);  // not a caster at all
-  const Image ref = exact_reference(scene, width, height);
+  const Image ref = fine_reference_airlight(scene, width, height);
   const Image marched = kit::test::render(find_method("raymarch"), scene, {"steps=64"}, width, height).airlight;
   EXPECT_LT(compare_images(marched, ref).rel_rmse, 0.01);  // raymarch's own error at N = 64, equiangular
-  const Image shadowed = exact_reference(builtin_scene("biri_sphere"), width, height);
+  const Image shadowed = fine_reference_airlight(builtin_scene("biri_sphere"), width, height);
   EXPECT_GT(compare_images(shadowed, ref).rel_rmse, 0.05);  // the sphere's shadow is a large part of the beam
 }
 

@@ -2,27 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
 namespace airlight::methods {
-namespace {
-
-// The plane of W(a, b) with geometry::shadow_plane_normal's orientation
-// (a − L) × (b − L), or D × (b − a) for a directional light, so that the
-// edge's weight counts as it says; normalized in double (kit::counted_plane).
-glm::vec4 wedge_plane(const geometry::ShadowPlane& p, const Light& light) {
-  const glm::dvec3 a(p.a), b(p.b);
-  const bool directional = light.type == LightType::directional;
-  const glm::dvec3 l(light.position), n = directional ? glm::cross(glm::dvec3(light.direction), b - a)
-                                                      : glm::cross(a - l, b - l);
-  const double length = glm::length(n);
-  const glm::dvec3 unit = length > 0.0 ? n / length : n;
-  return glm::vec4(glm::vec3(unit), static_cast<float>(glm::dot(unit, directional ? a : l)));
-}
-
-}  // namespace
-
 void Silhouettes::prepare(const Scene& scene) {
   casters_.clear();
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -50,7 +32,12 @@ void Silhouettes::add_planes(const std::vector<geometry::ShadowPlane>& planes, c
     const glm::vec4 a(p.a, 1.0f), b(p.b, 1.0f);
     const glm::vec4 a_far = directional ? glm::vec4(light.direction, 0.0f) : glm::vec4(p.a - light.position, 0.0f);
     const glm::vec4 b_far = directional ? glm::vec4(light.direction, 0.0f) : glm::vec4(p.b - light.position, 0.0f);
-    const glm::vec4 plane = wedge_plane(p, light);
+    // Through the edge and toward the light: counted_plane's (b − a) × (L − a)
+    // is (a − L) × (b − L), and with (−D, 0) it is D × (b − a), the
+    // orientation the edge's weight counts by (geometry/shadow_edges.hpp).
+    const glm::dvec4 toward = directional ? glm::dvec4(-glm::dvec3(light.direction), 0.0)
+                                          : glm::dvec4(glm::dvec3(light.position), 1.0);
+    const glm::vec4 plane = kit::counted_plane(glm::dvec4(a), glm::dvec4(b), toward);
     const glm::ivec4 light_weight(index, p.weight, 0, 0);
     triangles_.push_back({{a, b, b_far}, plane, light_weight});
     triangles_.push_back({{a, b_far, a_far}, plane, light_weight});
