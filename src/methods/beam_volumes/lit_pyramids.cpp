@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <unordered_map>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
@@ -39,110 +38,6 @@ bool inside_pyramid(const geometry::BeamPolygon& base, const Light& light, const
 }
 
 }  // namespace
-
-// The visible set made conforming: vertices within `tolerance` welded, and
-// every edge split at the vertices that lie on it (T-junctions, where the
-// beam tree cut one piece and not its neighbour), so that two pieces share an
-// edge vertex for vertex. Their pyramids' sides along it are then the same
-// triangles with opposite windings, which cancel exactly; otherwise the
-// rasterizer covers a side and the two that replace it along the neighbour
-// differently, leaving unmatched crossings that flip a light's count along
-// the rest of the ray.
-class ConformingSet {
-public:
-  ConformingSet(const std::vector<geometry::BeamPolygon>& pieces, double tolerance) : tolerance_(tolerance) {
-    glm::dvec3 lo(INFINITY), hi(-INFINITY);
-    for (const auto& p : pieces)
-      for (const glm::dvec3& v : p.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
-    origin_ = lo;
-    size_t count = 0;
-    for (const auto& p : pieces) count += p.vertices.size();
-    const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, tolerance});
-    cell_ = std::max(extent / std::cbrt(std::max<double>(count, 1.0)), 4.0 * tolerance);
-    for (const auto& p : pieces) {
-      std::vector<int> loop;
-      for (const glm::dvec3& v : p.vertices) loop.push_back(weld(v));
-      loops_.push_back(std::move(loop));
-    }
-  }
-
-  // Piece k's loop of welded vertices with every vertex that lies on one of its edges inserted.
-  std::vector<int> conforming(size_t k) const {
-    std::vector<int> out;
-    const std::vector<int>& loop = loops_[k];
-    for (size_t e = 0; e < loop.size(); ++e) {
-      const int a = loop[e], b = loop[(e + 1) % loop.size()];
-      if (a == b) continue;
-      out.push_back(a);
-      for (int m : on_edge(a, b)) out.push_back(m);
-    }
-    return out;
-  }
-  const glm::dvec3& vertex(int id) const { return vertices_[id]; }
-  // Whether b lies within `tolerance` of the line through a and c.
-  bool collinear(int a, int b, int c) const {
-    const glm::dvec3 d = vertices_[c] - vertices_[a];
-    const double length = glm::length(d);
-    return length > 0.0 && glm::length(glm::cross(vertices_[b] - vertices_[a], d)) / length <= tolerance_;
-  }
-  size_t size() const { return loops_.size(); }
-
-private:
-  using Key = std::array<long long, 3>;
-  struct KeyHash {
-    size_t operator()(const Key& k) const { return std::hash<long long>()(k[0] * 73856093LL ^ k[1] * 19349663LL ^ k[2] * 83492791LL); }
-  };
-  Key key(const glm::dvec3& x) const {
-    const glm::dvec3 c = glm::floor((x - origin_) / cell_);
-    return {static_cast<long long>(c.x), static_cast<long long>(c.y), static_cast<long long>(c.z)};
-  }
-
-  int weld(const glm::dvec3& v) {
-    const Key k = key(v);
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz) {
-          const auto it = grid_.find({k[0] + dx, k[1] + dy, k[2] + dz});
-          if (it == grid_.end()) continue;
-          for (int id : it->second)
-            if (glm::distance(vertices_[id], v) <= tolerance_) return id;
-        }
-    vertices_.push_back(v);
-    grid_[k].push_back(static_cast<int>(vertices_.size()) - 1);
-    return static_cast<int>(vertices_.size()) - 1;
-  }
-
-  // The welded vertices strictly inside segment a → b within `tolerance` of it, from a to b.
-  std::vector<int> on_edge(int a, int b) const {
-    const glm::dvec3 p = vertices_[a], q = vertices_[b], d = q - p;
-    const double length2 = glm::dot(d, d);
-    std::vector<std::pair<double, int>> found;
-    const Key lo = key(glm::min(p, q) - tolerance_), hi = key(glm::max(p, q) + tolerance_);
-    for (long long x = lo[0]; x <= hi[0]; ++x)
-      for (long long y = lo[1]; y <= hi[1]; ++y)
-        for (long long z = lo[2]; z <= hi[2]; ++z) {
-          const auto it = grid_.find({x, y, z});
-          if (it == grid_.end()) continue;
-          for (int id : it->second) {
-            if (id == a || id == b) continue;
-            const double s = glm::dot(vertices_[id] - p, d) / length2;
-            if (s <= 0.0 || s >= 1.0) continue;
-            if (glm::distance(p + s * d, vertices_[id]) <= tolerance_) found.emplace_back(s, id);
-          }
-        }
-    std::sort(found.begin(), found.end());
-    std::vector<int> ids;
-    for (const auto& f : found) ids.push_back(f.second);
-    return ids;
-  }
-
-  double tolerance_, cell_ = 1.0;
-  glm::dvec3 origin_{0.0};
-  std::vector<glm::dvec3> vertices_;
-  std::vector<std::vector<int>> loops_;
-  std::unordered_map<Key, std::vector<int>, KeyHash> grid_;
-};
-
 
 void LitPyramids::prepare(const Scene& scene) {
   casters_.clear();
@@ -181,7 +76,7 @@ void LitPyramids::add_face(const glm::dvec4& a, const glm::dvec4& b, const glm::
 // each base, and a side per edge that no neighbour shares (a shared side
 // appears once in each direction and cancels), each wound to face out of its
 // pyramid.
-void LitPyramids::add_pyramids(const ConformingSet& set, const Light& light, int index) {
+void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& light, int index) {
   const bool directional = light.type == LightType::directional;
   const glm::dvec4 apex = directional ? glm::dvec4(-glm::dvec3(light.direction), 0.0) : glm::dvec4(glm::dvec3(light.position), 1.0);
   std::vector<std::vector<int>> loops;
@@ -235,7 +130,7 @@ void LitPyramids::build(const FrameInputs& inputs) {
     const glm::dvec3 eye(inputs.camera.position);
     for (const geometry::BeamPolygon& p : tree.visible_set())
       if (inside_pyramid(p, light, eye)) eye_counts_[i] = 0;
-    add_pyramids(ConformingSet(tree.visible_set(), epsilon), light, static_cast<int>(i));
+    add_pyramids(geometry::ConformingSet(tree.visible_set(), epsilon), light, static_cast<int>(i));
   }
   build_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -6,6 +6,7 @@
 // them: together, exactly the light's lit region. Their faces are the
 // triangles the kit's lit-interval pass counts.
 #include "geometry/beam_tree.hpp"
+#include "geometry/conforming_set.hpp"
 #include "methods/kit/lit_interval_pass.hpp"
 
 #include <airlight/method.hpp>
@@ -15,8 +16,6 @@
 #include <vector>
 
 namespace airlight::methods {
-
-class ConformingSet;
 
 class LitPyramids {
 public:
@@ -34,7 +33,7 @@ public:
 
 private:
   std::vector<geometry::BeamPolygon> world_polygons(const FrameInputs& inputs) const;
-  void add_pyramids(const ConformingSet& set, const Light& light, int index);
+  void add_pyramids(const geometry::ConformingSet& set, const Light& light, int index);
   void add_face(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, int index);
 
   std::vector<const Mesh*> casters_;

@@ -12,7 +12,7 @@
 // as Gouraud shading did in the paper.
 // Specialized as planes.frag.glsl: PLANE_LIGHT, LATTICE_XI (ξ per vertex, else
 // per fragment: `xi` unused).
-#include "methods/planes/view_ray.glsl"
+#include "methods/kit/view_ray.glsl"
 
 const int light = PLANE_LIGHT;  // index into lights[]
 uniform int lattice;      // cells per side of the mesh

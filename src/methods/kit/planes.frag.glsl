@@ -9,12 +9,16 @@
 // pixel's jitter offset), so a surface inside a slab gets no step of up to dz
 // in its fog and a shaft's edge no step across it.
 //
-// Specialized by PlanePass, one program per light: PLANE_LIGHT (the light's
-// index), LATTICE_XI (ξ from the lattice), JITTER (per-pixel offsets of the
-// samples within their slabs, Dobashi §7) and LIT_SAMPLING (the slab's lit
-// piece, else the slab as Dobashi).
+// Specialized by PlanePass, one program per light and part: PLANE_LIGHT (the
+// light's index), LATTICE_XI (ξ from the lattice), JITTER (per-pixel offsets of
+// the samples within their slabs, Dobashi §7), LIT_SAMPLING (the slab's lit
+// piece, else the slab as Dobashi); with regions (plane_pass.cpp
+// draw_regions) FULL_SLABS (only slabs wholly in front of the surface),
+// FULLY_LIT (no shadow test) or FULLY_LIT_GAMMA (Γ), and CUT_SLABS (a
+// full-screen pass over the slabs the surface cuts).
 #define SCENE_IN_REGISTERS
-#include "methods/planes/view_ray.glsl"
+#include "methods/kit/view_ray.glsl"
+#include "methods/kit/closed_form.glsl"
 
 layout(binding = BINDING_JITTER) uniform sampler2D jitter_offsets;  // R32F tile of values in [0, 1)
 
@@ -81,17 +85,16 @@ vec2 piece_sample(Piece p, vec3 light, vec3 eye, vec3 dir, float u, int n) {
   return vec2(t, (p.theta.y - p.theta.x) / float(n) / p.h * r2);
 }
 
+#ifdef CUT_SLABS
+uniform int plane_count;
+#else
 flat in int plane;
 in vec3 xi;
+#endif
 layout(location = 0) out vec4 airlight;
 
-void main() {
-  load_scene();
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec3 dir = pixel_ray(gl_FragCoord.xy);
-  float cos_axis = dot(dir, frame.forward);
-  float z0 = float(plane) * dz;
-  float z1 = min(z0 + dz, surface_distance(pixel) * cos_axis);
+// Plane k's sample over [z0, z1] of view depth along the pixel's ray.
+vec3 slab_airlight(ivec2 pixel, vec3 dir, float cos_axis, float z0, float z1) {
   vec3 eye = frame.eye;
   // The slab's piece of the ray in front of the surface, cut to where the
   // light can arrive (a spot's cone, a beam's box): the sample never falls
@@ -102,7 +105,13 @@ void main() {
 #else
   vec2 lit = vec2(z0, z1) / cos_axis;
 #endif
-  if (!(lit.y > lit.x)) discard;
+  if (!(lit.y > lit.x)) return vec3(0.0);
+#ifdef FULLY_LIT_GAMMA
+  // Nilsson §5.4: no object lies between the slab and the light, so its
+  // airlight is Γ over the piece — closed where the light has no gobo and no
+  // volume bounds the medium, else sampled as below without the shadow test.
+  if (!light_gobos[light] && VOLUME_COUNT == 0) return closed_form_airlight(light, eye, dir, lit.x, lit.y);
+#endif
 #ifdef JITTER
   float offset = texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r;
 #else
@@ -124,7 +133,11 @@ void main() {
     vec2 s = piece_sample(p, light_position, eye, dir, (float(k) + offset) / float(n), n);
     vec3 x = eye + s.x * dir;
     vec3 map = light_map(light, x);
+#if defined(FULLY_LIT) || defined(FULLY_LIT_GAMMA)
+    if (map == vec3(0.0)) continue;  // Nilsson §5.3: nothing shadows a fully lit part
+#else
     if (map == vec3(0.0) || shadow_visibility(light, x) == 0.0) continue;
+#endif
     // ξ per unit length along the ray (the lattice's is per unit depth) times
     // the sample's weight: Δt, or ∫ f dt / f(r), trading ξ's falloff for its integral.
 #ifdef LATTICE_XI
@@ -134,6 +147,31 @@ void main() {
 #endif
     sum += map * xi_here * s.y;
   }
+  return sum;
+}
+
+void main() {
+  load_scene();
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec3 dir = pixel_ray(gl_FragCoord.xy);
+  float cos_axis = dot(dir, frame.forward);
+  float surface = surface_distance(pixel) * cos_axis;
+  vec3 sum = vec3(0.0);
+#ifdef CUT_SLABS
+  // The slabs the surface cuts, z0 < surface < z0 + dz, with z0 and z0 + dz as
+  // each plane computes them: rounding may make it two neighbours or none.
+  int middle = int(ceil(surface / dz)) - 1;
+  for (int k = max(middle - 1, 0); k <= min(middle + 1, plane_count - 1); ++k) {
+    float z0 = float(k) * dz;
+    if (z0 < surface && surface < z0 + dz) sum += slab_airlight(pixel, dir, cos_axis, z0, surface);
+  }
+#else
+  float z0 = float(plane) * dz;
+#ifdef FULL_SLABS
+  if (surface < z0 + dz) discard;  // the surface cuts the slab: CUT_SLABS samples it
+#endif
+  sum = slab_airlight(pixel, dir, cos_axis, z0, min(z0 + dz, surface));
+#endif
   if (sum == vec3(0.0)) discard;
   airlight = vec4(sum, 0.0);
 }

@@ -1,0 +1,24 @@
+#include "methods/kit/plane_method.hpp"
+#include "methods/kit/registry.hpp"
+
+#include <memory>
+
+namespace airlight::methods {
+namespace {
+
+// Nilsson 2008 §5.3, Method 1: planes cut by the regions of the casters'
+// bounding volumes (kit/slab_regions.hpp, kit/plane_pass.cpp draw_regions).
+MethodInfo hybrid_clip_method() {
+  return {"hybrid_clip", "Nilsson 2008 §5.3",
+          "the planes cut per light by the beam trees of the casters' bounding volumes: unlit parts never "
+          "rasterized, fully lit parts sampled without the shadow-map test, uncertain parts with it; with "
+          "sampling=plane the image of planes, from fewer fragments",
+          kit::gpu_settings(kit::plane_settings(true)),
+          [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::clip); }};
+}
+
+}  // namespace
+
+AIRLIGHT_REGISTER_METHOD(7, hybrid_clip_method);
+
+}  // namespace airlight::methods

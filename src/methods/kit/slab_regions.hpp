@@ -1,0 +1,58 @@
+#pragma once
+// Nilsson 2008 §5.3–5.4: the virtual planes cut by each light's regions. Per
+// frame and light, the beam trees of the casters' bounding volumes
+// (geometry::LightRegions) partition each plane's cross-section of the view
+// frustum into fully lit, uncertain and unlit polygons; the plane pass draws
+// the first two with different programs and never the third.
+//
+// A plane stands for its slab [k·dz, (k+1)·dz] of view depth and samples it at
+// its middle (plane_pass.hpp), so the cross-section is taken there: a full
+// slab's sample then lies on the polygon that classified it. Where what a
+// fragment takes may lie up to `margin` from that middle (lit sampling's
+// pieces, Γ over the slab), the outer boxes grow and the inner ones shrink by
+// it: a path to the light from within `margin` of a point runs within `margin`
+// of that point's path (the two meet at a point light, run parallel toward a
+// directional one), so a point fully lit among the grown boxes has its whole
+// neighbourhood fully lit, and likewise unlit among the shrunk ones.
+#include "geometry/bounding_volumes.hpp"
+#include "geometry/camera.hpp"
+
+#include <airlight/method.hpp>
+#include <airlight/scene.hpp>
+#include <glm/vec3.hpp>
+#include <utility>
+#include <vector>
+
+namespace airlight::kit {
+
+// One corner of a region triangle: world position at its slab's middle, and the slab.
+struct RegionVertex {
+  glm::vec3 position;
+  int plane;
+};
+
+class SlabRegions {
+public:
+  // The shadow casters' bounding volumes (geometry::bounding_volumes), in the scene's coordinates.
+  void prepare(const Scene& scene);
+
+  // Light `light`'s trees for this frame (the casters moved by the inputs' transforms, the
+  // boxes grown or shrunk by margin), then planes 0 … count − 1 of spacing dz partitioned
+  // into triangles.
+  void build(const FrameInputs& inputs, int light, int count, float dz, float margin);
+  const std::vector<RegionVertex>& fully_lit() const { return fully_lit_; }
+  const std::vector<RegionVertex>& uncertain() const { return uncertain_; }
+
+  // Summed over the lights since reset(): region polygons per kind, the trees' nodes, build seconds.
+  void reset();
+  std::vector<std::pair<std::string, double>> stats() const;
+
+private:
+  std::vector<geometry::BoundingVolumes> volumes_;
+  std::vector<int> meshes_;  // index into Scene::meshes per volume
+  std::vector<RegionVertex> fully_lit_, uncertain_;
+  double polygons_[3] = {0.0, 0.0, 0.0};
+  double nodes_ = 0.0, seconds_ = 0.0;
+};
+
+}  // namespace airlight::kit
