@@ -23,26 +23,25 @@ OrientedBox vertex_box(const Mesh& mesh) {
   return {0.5f * (lo + hi), glm::mat3(1.0f), 0.5f * (hi - lo)};
 }
 
-OrientedBox cube(const glm::vec3& center, float half) {
-  return {center, glm::mat3(1.0f), glm::vec3(half)};
-}
-
-// The header's computed inner volume. Bisection is sound because a cube inside the mesh
-// holds every smaller cube about the same centre; each candidate is tested as stored (float).
-std::optional<OrientedBox> inner_cube(const Mesh& mesh, const OrientedBox& box) {
-  if (!solid::closed(mesh.positions, mesh.triangles)) return std::nullopt;
+// The header's computed inner volume. Bisection is sound because a box inside the mesh
+// holds every smaller copy of it about the same centre; each candidate is tested as stored
+// (float).
+std::optional<OrientedBox> inner_box(const Mesh& mesh, const OrientedBox& box) {
+  if (!solid::closed(mesh.positions, mesh.triangles) || !glm::all(glm::greaterThan(box.half, glm::vec3(0.0f))))
+    return std::nullopt;
   glm::dvec3 sum(0.0);
   for (const glm::vec3& p : mesh.positions) sum += glm::dvec3(p);
   const glm::vec3 center(sum / double(mesh.positions.size()));
   if (!solid::inside(mesh.positions, mesh.triangles, center)) return std::nullopt;
-  const glm::vec3 room = box.half - glm::abs(center - box.center);
+  const glm::vec3 room = (box.half - glm::abs(center - box.center)) / box.half;  // per axis, as a scale
+  const auto scaled = [&](float s) { return OrientedBox{center, glm::mat3(1.0f), s * box.half}; };
   float lo = 0.0f, hi = std::min({room.x, room.y, room.z});
-  for (int i = 0; i < 20; ++i) {  // to 2⁻²⁰ of the room: a millionth of the cube's size
+  for (int i = 0; i < 20; ++i) {  // to 2⁻²⁰ of the room: a millionth of the box's size
     const float mid = 0.5f * (lo + hi);
-    (solid::box_inside(mesh.positions, mesh.triangles, cube(center, mid)) ? lo : hi) = mid;
+    (solid::box_inside(mesh.positions, mesh.triangles, scaled(mid)) ? lo : hi) = mid;
   }
   if (lo == 0.0f) return std::nullopt;
-  return cube(center, lo);
+  return scaled(lo);
 }
 
 bool contains(const OrientedBox& box, const glm::vec3& p) {
@@ -72,7 +71,7 @@ std::vector<BeamPolygon> inner_faces(std::span<const BoundingVolumes> volumes,
 
 BoundingVolumes bounding_volumes(const Mesh& mesh) {
   const OrientedBox box = vertex_box(mesh);
-  return {mesh.outer_box.value_or(box), mesh.inner_box ? mesh.inner_box : inner_cube(mesh, box)};
+  return {mesh.outer_box.value_or(box), mesh.inner_box ? mesh.inner_box : inner_box(mesh, box)};
 }
 
 std::vector<BeamPolygon> box_faces(const OrientedBox& box, int source) {

@@ -25,10 +25,11 @@ struct BoundingVolumes {
 // The mesh's outer_box and inner_box when the scene gives them; otherwise the outer volume is
 // the world-space axis-aligned box of its vertices (not the convex hull: six faces keep the
 // beam tree small, and Nilsson's volumes are boxes too), and the inner one, for a mesh closed
-// once welded by exact position, the largest axis-aligned cube about the mean of its vertices
-// that lies inside it (solid::box_inside), its half-size found by 20 bisections below the
-// distance from that mean to the outer box's nearest face; none when the mean is outside or
-// the mesh is open.
+// once welded by exact position, the largest copy of that box scaled about the mean of its
+// vertices that lies inside it (solid::box_inside), the scale found by 20 bisections below
+// the largest that keeps the copy inside the outer box: the box itself, nearly, for a box, the
+// inscribed cube of a sphere; none when the mean is outside or the mesh is open. (A cube, as
+// first built, left a thin slab a sliver of its inside.)
 BoundingVolumes bounding_volumes(const Mesh& mesh);
 
 // The box's six faces as beam tree polygons, each with `source`.

@@ -158,13 +158,16 @@ void main() {
   float surface = surface_distance(pixel) * cos_axis;
   vec3 sum = vec3(0.0);
 #ifdef CUT_SLABS
-  // The slabs the surface cuts, z0 < surface < z0 + dz, with z0 and z0 + dz as
-  // each plane computes them: rounding may make it two neighbours or none.
-  int middle = int(ceil(surface / dz)) - 1;
-  for (int k = max(middle - 1, 0); k <= min(middle + 1, plane_count - 1); ++k) {
-    float z0 = float(k) * dz;
-    if (z0 < surface && surface < z0 + dz) sum += slab_airlight(pixel, dir, cos_axis, z0, surface);
-  }
+  // The slab the surface cuts, z0 < surface < z0 + dz, with z0 and z0 + dz as
+  // its plane computes them. Rounding may make a neighbour's z0 fall below the
+  // surface too: that one's piece is a rounding error of the depth, left out
+  // (one evaluation per pixel, not three: llvmpipe runs every iteration).
+  int k = clamp(int(ceil(surface / dz)) - 1, 0, plane_count - 1);
+  if (float(k) * dz >= surface) k = max(k - 1, 0);
+  if (float(k) * dz + dz <= surface) k = min(k + 1, plane_count - 1);
+  float z0 = float(k) * dz;
+  if (!(z0 < surface && surface < z0 + dz)) discard;
+  sum = slab_airlight(pixel, dir, cos_axis, z0, surface);
 #else
   float z0 = float(plane) * dz;
 #ifdef FULL_SLABS
