@@ -12,21 +12,11 @@
 // as Gouraud shading did in the paper.
 // Specialized as planes.frag.glsl: PLANE_LIGHT, LATTICE_XI (ξ per vertex, else
 // per fragment: `xi` unused).
-#include "methods/kit/view_ray.glsl"
+#include "methods/kit/plane_vertex.glsl"
 
 const int light = PLANE_LIGHT;  // index into lights[]
 uniform int lattice;      // cells per side of the mesh
 uniform float dz;         // slab thickness in view depth
-uniform vec4 clip_planes[8];  // world half-spaces dot(xyz, x) + w >= 0
-uniform int clip_count;
-uniform float clip_margin;    // how far a fragment's sample may lie from the slab's middle
-
-out gl_PerVertex {
-  vec4 gl_Position;
-  float gl_ClipDistance[8];
-};
-flat out int plane;
-out vec3 xi;
 
 void main() {
   ivec2 corner = ivec2(gl_VertexID % (lattice + 1), gl_VertexID / (lattice + 1));
@@ -38,8 +28,7 @@ void main() {
   float near_face = max(float(plane) * dz, frame.near_plane * 1.0001);
   gl_Position = frame.view_projection * vec4(eye + near_face * ray, 1.0);
   vec3 x = eye + (float(plane) + 0.5) * dz * ray;
-  for (int c = 0; c < 8; ++c)
-    gl_ClipDistance[c] = c < clip_count ? dot(clip_planes[c].xyz, x) + clip_planes[c].w + clip_margin : 1.0;
+  set_clip_distances(x);
   // Per unit view depth: a step dz in depth is dz·|ray| = dz/cos along the ray
   // (Nilsson ch. 3, footnote 1).
 #ifdef LATTICE_XI
