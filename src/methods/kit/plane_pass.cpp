@@ -174,7 +174,10 @@ void PlanePass::draw_light(const SceneFrame& frame, int light, const LightBounds
 // fragments. Lit sampling's pieces and Γ over a fully lit slab reach the whole
 // slab: its regions are then taken with that margin (slab_regions.hpp).
 void PlanePass::draw_regions(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip) {
-  slab_regions_.build(frame.inputs(), light, s.count, s.dz, 0.5f * s.dz / cos_edge_);
+  const float margin = 0.5f * s.dz / cos_edge_;  // as the clip distances' (draw)
+  std::vector<glm::vec4> widened = clip;
+  for (glm::vec4& h : widened) h.w += margin;
+  slab_regions_.build(frame.inputs(), light, s.count, s.dz, margin, widened);
   glEnable(GL_CULL_FACE);  // the regions' triangles face the eye (slab_regions.cpp)
   for (const Part part : {Part::fully_lit, Part::uncertain}) {
     upload(part == Part::fully_lit ? slab_regions_.fully_lit() : slab_regions_.uncertain());

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <map>
+#include <tbb/parallel_for.h>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
@@ -149,6 +150,48 @@ void append_fan(const geometry::ConformingSet& set, const std::vector<int>& loop
   }
 }
 
+// One plane's triangles per region and its region polygons (before merging).
+struct Slab {
+  std::vector<RegionVertex> fully_lit, uncertain;
+  double polygons[3] = {0.0, 0.0, 0.0};
+};
+
+// The convex polygon on the side dot(xyz, x) + w >= 0 of each half-space.
+geometry::BeamPolygon clipped(geometry::BeamPolygon polygon, const std::vector<glm::vec4>& half_spaces) {
+  for (const glm::vec4& h : half_spaces) {
+    const glm::dvec3 n(h);
+    std::vector<glm::dvec3> out;
+    const std::vector<glm::dvec3>& v = polygon.vertices;
+    for (size_t k = 0; k < v.size(); ++k) {
+      const glm::dvec3 &a = v[k], &b = v[(k + 1) % v.size()];
+      const double da = glm::dot(n, a) + h.w, db = glm::dot(n, b) + h.w;
+      if (da >= 0.0) out.push_back(a);
+      if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (da / (da - db)) * (b - a));
+    }
+    polygon.vertices = std::move(out);
+  }
+  return polygon;
+}
+
+// Plane k's cross-section partitioned into regions, made conforming, merged and fanned.
+Slab partitioned(const geometry::LightRegions& regions, const geometry::CameraBasis& camera,
+                 const geometry::BeamPolygon& section, int k) {
+  Slab slab;
+  if (section.vertices.size() < 3) return slab;
+  std::vector<geometry::BeamPolygon> parts[3];
+  regions.partition(section, parts[0], parts[1], parts[2]);
+  for (int r = 0; r < 3; ++r) slab.polygons[r] = static_cast<double>(parts[r].size());
+  const size_t lit = parts[0].size(), uncertain = lit + parts[1].size();
+  std::vector<geometry::BeamPolygon> all = std::move(parts[0]);
+  all.insert(all.end(), parts[1].begin(), parts[1].end());
+  all.insert(all.end(), parts[2].begin(), parts[2].end());
+  const geometry::ConformingSet set(all, regions.epsilon());
+  const RegionLoops loops(set, camera);
+  for (const std::vector<int>& loop : loops.merged(0, lit)) append_fan(set, loop, k, slab.fully_lit);
+  for (const std::vector<int>& loop : loops.merged(lit, uncertain)) append_fan(set, loop, k, slab.uncertain);
+  return slab;
+}
+
 }  // namespace
 
 void SlabRegions::prepare(const Scene& scene) {
@@ -166,7 +209,8 @@ void SlabRegions::reset() {
   nodes_ = seconds_ = 0.0;
 }
 
-void SlabRegions::build(const FrameInputs& inputs, int light, int count, float dz, float margin) {
+void SlabRegions::build(const FrameInputs& inputs, int light, int count, float dz, float margin,
+                        const std::vector<glm::vec4>& clip) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<geometry::BoundingVolumes> posed = volumes_;
   for (size_t k = 0; k < posed.size(); ++k) {
@@ -182,25 +226,22 @@ void SlabRegions::build(const FrameInputs& inputs, int light, int count, float d
   }
   const geometry::LightRegions regions(geometry::light_origin(inputs.lights[light]), posed);
   nodes_ += regions.outer().node_count() + regions.inner().node_count();
-  fully_lit_.clear();
-  uncertain_.clear();
   const geometry::CameraBasis camera = geometry::camera_basis(inputs.camera);
   const double aspect = double(inputs.width) / inputs.height;
-  std::vector<geometry::BeamPolygon> parts[3];
-  for (int k = 0; k < count; ++k) {
-    for (auto& p : parts) p.clear();
+  // The planes are independent: each partitioned on its own thread's turn,
+  // then appended in order (the draw order, hence the blend's, stays fixed).
+  std::vector<Slab> slabs(static_cast<size_t>(std::max(count, 0)));
+  tbb::parallel_for(0, count, [&](int k) {
     // The slab's middle as the shader computes it: (float(k) + 0.5)·dz.
     const double z = (float(k) + 0.5f) * dz;
-    regions.partition(cross_section(camera, aspect, z), parts[0], parts[1], parts[2]);
-    for (int r = 0; r < 3; ++r) polygons_[r] += static_cast<double>(parts[r].size());
-    const size_t lit = parts[0].size(), uncertain = lit + parts[1].size();
-    std::vector<geometry::BeamPolygon> all = std::move(parts[0]);
-    all.insert(all.end(), parts[1].begin(), parts[1].end());
-    all.insert(all.end(), parts[2].begin(), parts[2].end());
-    const geometry::ConformingSet set(all, regions.epsilon());
-    const RegionLoops loops(set, camera);
-    for (const std::vector<int>& loop : loops.merged(0, lit)) append_fan(set, loop, k, fully_lit_);
-    for (const std::vector<int>& loop : loops.merged(lit, uncertain)) append_fan(set, loop, k, uncertain_);
+    slabs[k] = partitioned(regions, camera, clipped(cross_section(camera, aspect, z), clip), k);
+  });
+  fully_lit_.clear();
+  uncertain_.clear();
+  for (const Slab& slab : slabs) {
+    fully_lit_.insert(fully_lit_.end(), slab.fully_lit.begin(), slab.fully_lit.end());
+    uncertain_.insert(uncertain_.end(), slab.uncertain.begin(), slab.uncertain.end());
+    for (int r = 0; r < 3; ++r) polygons_[r] += slab.polygons[r];
   }
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

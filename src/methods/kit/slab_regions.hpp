@@ -20,6 +20,7 @@
 #include <airlight/method.hpp>
 #include <airlight/scene.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <utility>
 #include <vector>
 
@@ -37,9 +38,11 @@ public:
   void prepare(const Scene& scene);
 
   // Light `light`'s trees for this frame (the casters moved by the inputs' transforms, the
-  // boxes grown or shrunk by margin), then planes 0 … count − 1 of spacing dz partitioned
-  // into triangles.
-  void build(const FrameInputs& inputs, int light, int count, float dz, float margin);
+  // boxes grown or shrunk by margin), then planes 0 … count − 1 of spacing dz, clipped to
+  // the half-spaces dot(xyz, x) + w >= 0 (the light's influence, widened as the planes'
+  // clip distances are), partitioned into triangles.
+  void build(const FrameInputs& inputs, int light, int count, float dz, float margin,
+             const std::vector<glm::vec4>& clip);
   const std::vector<RegionVertex>& fully_lit() const { return fully_lit_; }
   const std::vector<RegionVertex>& uncertain() const { return uncertain_; }
 
