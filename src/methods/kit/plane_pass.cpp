@@ -96,6 +96,10 @@ void PlanePass::prepare(const Scene& scene) {
   if (settings_.regions != PlaneRegions::none) slab_regions_.prepare(scene);
 }
 
+// A sample lies anywhere in its slab, up to dz/2 in depth, i.e. dz/(2 cos)
+// along its ray, from the middle where the clip distances and the regions are taken.
+float PlanePass::reach(const Slabs& s) const { return 0.5f * s.dz / cos_edge_; }
+
 PlanePass::Slabs PlanePass::slabs(const LightBounds& volume) const {
   const double depth = lit_far_depth(volume, camera_, far_);
   if (!(depth > 0.0)) return {};
@@ -174,10 +178,9 @@ void PlanePass::draw_light(const SceneFrame& frame, int light, const LightBounds
 // fragments. Lit sampling's pieces and Γ over a fully lit slab reach the whole
 // slab: its regions are then taken with that margin (slab_regions.hpp).
 void PlanePass::draw_regions(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip) {
-  const float margin = 0.5f * s.dz / cos_edge_;  // as the clip distances' (draw)
   std::vector<glm::vec4> widened = clip;
-  for (glm::vec4& h : widened) h.w += margin;
-  slab_regions_.build(frame.inputs(), light, s.count, s.dz, margin, widened);
+  for (glm::vec4& h : widened) h.w += reach(s);
+  slab_regions_.build(frame.inputs(), light, s.count, s.dz, reach(s), widened);
   glEnable(GL_CULL_FACE);  // the regions' triangles face the eye (slab_regions.cpp)
   for (const Part part : {Part::fully_lit, Part::uncertain}) {
     upload(part == Part::fully_lit ? slab_regions_.fully_lit() : slab_regions_.uncertain());
@@ -218,9 +221,7 @@ void PlanePass::draw(const SceneFrame& frame, int light, Part part, const Slabs&
   }
   gpu::set_uniform(program, "clip_planes", clip);
   gpu::set_uniform(program, "clip_count", static_cast<int>(clip.size()));
-  // A sample lies anywhere in its slab, up to dz/2 in depth, i.e. dz/(2 cos)
-  // along its ray, from the middle where the clip distances are taken.
-  gpu::set_uniform(program, "clip_margin", 0.5f * s.dz / cos_edge_);
+  gpu::set_uniform(program, "clip_margin", reach(s));
   if (part != Part::lattice) {
     glBindVertexArray(region_mesh_.id());
     glDrawArrays(GL_TRIANGLES, 0, region_count_);

@@ -63,6 +63,7 @@ private:
     float dz = 0.0f;
   };
   Slabs slabs(const LightBounds& volume) const;
+  float reach(const Slabs& s) const;
   enum class Part { lattice, fully_lit, uncertain, cut_slabs };
   std::string defines(int light, Part part) const;
   void draw_light(const SceneFrame& frame, int light, const LightBounds& volume);
