@@ -82,31 +82,47 @@ void LitIntervalPass::run(const SceneFrame& frame, const std::vector<CountedTria
     }
     if (!triangles.empty())
       glNamedBufferSubData(triangles_.id(), 0, triangles.size() * sizeof(CountedTriangle), triangles.data());
-    if (frame.width() != width_ || frame.height() != height_) {
-      width_ = frame.width();
-      height_ = frame.height();
-      heads_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
-      glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width_);
-      glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height_);
-    }
-    if (nodes_.id() == 0)
-      allocate_pool(std::max<size_t>(static_cast<size_t>(double(width_) * height_ * capacity_per_pixel_), 1));
-    redraws_ = 0;
-    draw(frame, triangles.size());
-    while (crossings_ > node_capacity_) {  // some crossings did not fit: a larger pool, drawn again
-      allocate_pool(crossings_ + crossings_ / 4);
-      ++redraws_;
-      draw(frame, triangles.size());
-    }
+    list_crossings(frame, triangles_, triangles.size());
   }
   gpu::ScopedPass pass(timer, "airlight");
   resolve(frame, eye_counts, target);
 }
 
+void LitIntervalPass::run(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count,
+                          const std::vector<int>& eye_counts, const gpu::Texture& target, gpu::PassTimer& timer) {
+  {
+    gpu::ScopedPass pass(timer, "crossings");
+    list_crossings(frame, triangles, triangle_count);
+  }
+  gpu::ScopedPass pass(timer, "airlight");
+  resolve(frame, eye_counts, target);
+}
+
+// Every pixel's list of crossings, the pool grown and the triangles drawn
+// again until every crossing fits.
+void LitIntervalPass::list_crossings(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count) {
+  if (frame.width() != width_ || frame.height() != height_) {
+    width_ = frame.width();
+    height_ = frame.height();
+    heads_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
+    glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width_);
+    glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height_);
+  }
+  if (nodes_.id() == 0)
+    allocate_pool(std::max<size_t>(static_cast<size_t>(double(width_) * height_ * capacity_per_pixel_), 1));
+  redraws_ = 0;
+  draw(frame, triangles, triangle_count);
+  while (crossings_ > node_capacity_) {  // some crossings did not fit: a larger pool, drawn again
+    allocate_pool(crossings_ + crossings_ / 4);
+    ++redraws_;
+    draw(frame, triangles, triangle_count);
+  }
+}
+
 // The triangles rasterized over an attachment-less framebuffer: no depth test
 // (each fragment compares its t with the G-buffer distance), no culling (both
 // sides count), no near or far clipping (GL_DEPTH_CLAMP).
-void LitIntervalPass::draw(const SceneFrame& frame, size_t triangle_count) {
+void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count) {
   const GLuint empty = end_of_list;
   glClearTexImage(heads_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
   const GLuint counters[2] = {0, static_cast<GLuint>(std::min<size_t>(node_capacity_, end_of_list))};
@@ -118,7 +134,7 @@ void LitIntervalPass::draw(const SceneFrame& frame, size_t triangle_count) {
       {{GL_VERTEX_SHADER, "methods/kit/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/crossings.frag.glsl"}},
       frame.defines() + defines());
   glUseProgram(program.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
   glBindImageTexture(0, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);

@@ -49,6 +49,9 @@ public:
   // each light's lit intervals into `target`; the frame must be bound.
   void run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles, const std::vector<int>& eye_counts,
            const gpu::Texture& target, gpu::PassTimer& timer);
+  // The same with the triangles already on the GPU (a mesh a compute pass built).
+  void run(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count,
+           const std::vector<int>& eye_counts, const gpu::Texture& target, gpu::PassTimer& timer);
 
   // crossings (drawn into the lists), fragments (shaded by the last draw of
   // the triangles; 0 without pipeline statistics) and redraws (the pool grown
@@ -56,7 +59,8 @@ public:
   std::vector<std::pair<std::string, double>> stats() const;
 
 private:
-  void draw(const SceneFrame& frame, size_t triangle_count);
+  void list_crossings(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
+  void draw(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
   void resolve(const SceneFrame& frame, const std::vector<int>& eye_counts, const gpu::Texture& target);
   void allocate_pool(size_t nodes);
   std::string defines() const;
