@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <limits>
 #include <optional>
 
@@ -57,7 +58,7 @@ TEST(BuiltinScenes, EveryBuiltinLoadsWithValidData) {
 TEST(BuiltinScenes, IncludeTheDocumentsScenes) {
   const auto names = builtin_scene_names();
   for (const char* name : {"teapot_spot", "stage", "stained_glass", "biri_sphere", "biri_pens", "biri_media",
-                           "nilsson_toplight", "nilsson_parallel", "nilsson_multiple", default_builtin})
+                           "nilsson_toplight", "nilsson_parallel", "nilsson_multiple", "toth_hall", default_builtin})
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
 }
 
@@ -286,6 +287,57 @@ TEST(BuiltinScenes, StainedGlassRoomIsClosedButForTheWindow) {
           << ", " << at.y;
     }
   EXPECT_GT(escaped, 0) << "the window is open";
+}
+
+// ---- toth_hall (Tóth and Umenhoffer 2009, §5) --------------------------------
+
+size_t triangle_count(const Scene& scene) {
+  size_t n = 0;
+  for (const Mesh& mesh : scene.meshes) n += mesh.triangles.size();
+  return n;
+}
+
+// "The scene consists of 66000 triangles and is illuminated by a point light."
+TEST(BuiltinScenes, TothHallHasAbout66000TrianglesAndOnePointLight) {
+  const Scene scene = builtin_scene("toth_hall");
+  const size_t n = triangle_count(scene);
+  RecordProperty("triangles", std::to_string(n));
+  EXPECT_GE(n, 60000u);
+  EXPECT_LE(n, 72000u);
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_EQ(scene.lights[0].type, LightType::point);
+  EXPECT_EQ(std::count_if(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return m.name == "column"; }),
+            16);
+}
+
+// The light and the camera stand inside the hall's walls and outside the bounds
+// of every object in it, and every ray from them meets the walls: the hall is closed.
+TEST(BuiltinScenes, TothHallEnclosesTheLightAndTheCameraOutsideEveryObject) {
+  const Scene scene = builtin_scene("toth_hall");
+  const auto floor = bounds_of(scene, "floor"), ceiling = bounds_of(scene, "ceiling");
+  const auto left = bounds_of(scene, "left wall"), right = bounds_of(scene, "right wall");
+  const auto front = bounds_of(scene, "front wall"), back = bounds_of(scene, "back wall");
+  ASSERT_TRUE(floor && ceiling && left && right && front && back);
+  const Bounds inside{{left->max.x, floor->max.y, back->max.z}, {right->min.x, ceiling->min.y, front->min.z}};
+  const auto is_wall = [](const Mesh& m) {
+    return m.name.find("wall") != std::string::npos || m.name == "floor" || m.name == "ceiling";
+  };
+  Scene walls;
+  std::copy_if(scene.meshes.begin(), scene.meshes.end(), std::back_inserter(walls.meshes), is_wall);
+  ASSERT_EQ(walls.meshes.size(), 6u);
+  for (const glm::vec3& p : {scene.lights.at(0).position, scene.camera.position}) {
+    EXPECT_TRUE(inside.contains(p));
+    for (const Mesh& mesh : scene.meshes) {
+      if (is_wall(mesh)) continue;
+      Bounds b;
+      for (const glm::vec3& q : mesh.positions) {
+        b.min = glm::min(b.min, q);
+        b.max = glm::max(b.max, q);
+      }
+      EXPECT_FALSE(b.contains(p)) << mesh.name;
+    }
+    for (int k = 0; k < 2000; ++k) EXPECT_TRUE(hits_a_mesh(walls, p, sphere_direction(k, 2000))) << k;
+  }
 }
 
 TEST(BuiltinScenes, UnknownNameIsAnInputError) {

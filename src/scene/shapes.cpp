@@ -131,4 +131,41 @@ Mesh make_cylinder(const glm::vec3& base, float radius, float height, int segmen
   return b.take("cylinder");
 }
 
+Mesh make_arch(const glm::vec3& center, float inner_radius, float outer_radius, float depth,
+               int segments) {
+  MeshBuilder b;
+  // Direction j of the half circle, exact at the ends so that they lie on y = center.y.
+  const auto dir = [&](int j) -> glm::vec3 {
+    if (j == 0 || j == segments) return {j == 0 ? 1.0f : -1.0f, 0.0f, 0.0f};
+    const float phi = glm::pi<float>() * static_cast<float>(j) / segments;
+    return {std::cos(phi), std::sin(phi), 0.0f};
+  };
+  const float h = 0.5f * depth, ri = inner_radius, ro = outer_radius;
+  const auto at = [&](int j, float r, float z) { return center + r * dir(j) + glm::vec3(0, 0, z); };
+  // A face swept along the arch: quads (p_j, q_j, q_j+1, p_j+1) between the
+  // points at (radius, z) `p` and `q`, counter-clockwise about normal(dir).
+  const auto strip = [&](glm::vec2 p, glm::vec2 q, auto normal) {
+    const uint32_t first = static_cast<uint32_t>(b.mesh().positions.size());
+    for (int j = 0; j <= segments; ++j) {
+      b.vertex(at(j, p.x, p.y), normal(dir(j)));
+      b.vertex(at(j, q.x, q.y), normal(dir(j)));
+    }
+    for (uint32_t j = 0; j < static_cast<uint32_t>(segments); ++j)
+      b.quad(first + 2 * j, first + 2 * j + 1, first + 2 * j + 3, first + 2 * j + 2);
+  };
+  strip({ri, h}, {ro, h}, [](glm::vec3) { return glm::vec3(0, 0, 1); });     // front
+  strip({ro, -h}, {ri, -h}, [](glm::vec3) { return glm::vec3(0, 0, -1); });  // back
+  strip({ro, h}, {ro, -h}, [](glm::vec3 d) { return d; });                   // extrados
+  strip({ri, -h}, {ri, h}, [](glm::vec3 d) { return -d; });                  // intrados
+  const glm::vec3 down(0, -1, 0);
+  const auto end = [&](int j, float r0, float r1) {  // a foot, facing down
+    const uint32_t v0 = b.vertex(at(j, r0, h), down), v1 = b.vertex(at(j, r0, -h), down);
+    const uint32_t v2 = b.vertex(at(j, r1, -h), down), v3 = b.vertex(at(j, r1, h), down);
+    b.quad(v0, v1, v2, v3);
+  };
+  end(0, ri, ro);
+  end(segments, ro, ri);
+  return b.take("arch");
+}
+
 }  // namespace airlight::scene_mesh

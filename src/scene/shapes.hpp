@@ -23,6 +23,12 @@ Mesh make_plane(const glm::vec3& center, glm::vec2 size, const glm::vec3& normal
 // Capped cylinder along +y from the centre of its base: smooth side, flat caps.
 Mesh make_cylinder(const glm::vec3& base, float radius, float height, int segments);
 
+// A semicircular arch: the half annulus between the radii above `center` in the
+// xy plane, `depth` thick along z about it, in `segments` voussoirs; its two
+// ends stand on the plane y = center.y. Smooth curved faces, flat sides and ends.
+Mesh make_arch(const glm::vec3& center, float inner_radius, float outer_radius, float depth,
+               int segments);
+
 // The Utah teapot (Newell's 32 bicubic patches), `segments`×`segments` quads
 // per patch, y up, spout toward +x, standing on y = 0 and 1 unit tall.
 Mesh make_teapot(int segments);

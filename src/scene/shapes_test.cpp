@@ -2,6 +2,8 @@
 #include "scene/shapes.hpp"
 #include "scene/test_support.hpp"
 
+#include <cmath>
+#include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
@@ -83,6 +85,23 @@ TEST(Shapes, CylinderIsClosedAndHasTheRightVolume) {
   for (const glm::vec3& p : cylinder.positions) {
     EXPECT_GE(p.y, 1.0f - 1e-6f);
     EXPECT_LE(p.y, 3.0f + 1e-6f);
+  }
+}
+
+TEST(Shapes, ArchIsClosedOutwardAndStandsOnItsFeet) {
+  const glm::vec3 center(1, 2, -1);
+  const Mesh arch = make_arch(center, 0.8f, 1.2f, 0.5f, 24);
+  ASSERT_TRUE(well_formed(arch));
+  EXPECT_EQ(arch.triangles.size(), 8u * 24u + 4u);
+  EXPECT_EQ(misoriented_fraction(arch), 0.0);
+  EXPECT_TRUE(closed_after_welding(arch));
+  const double exact = 0.5 * glm::pi<double>() * (1.2 * 1.2 - 0.8 * 0.8) * 0.5;
+  EXPECT_NEAR(signed_volume(arch) / exact, 1.0, 0.01);
+  for (const glm::vec3& p : arch.positions) {
+    EXPECT_GE(p.y, center.y);
+    const float r = glm::length(glm::vec2(p - center));
+    EXPECT_TRUE(std::fabs(r - 0.8f) < 1e-5f || std::fabs(r - 1.2f) < 1e-5f) << r;
+    EXPECT_NEAR(std::fabs(p.z - center.z), 0.25f, 1e-6f);
   }
 }
 
