@@ -181,6 +181,7 @@ void LightVolumeMesh::build(const SceneFrame& frame) {
   } else {
     glQueryCounter(finished_.id(), GL_TIMESTAMP);
   }
+  built_ = true;
 }
 
 void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame) {
@@ -279,7 +280,7 @@ std::vector<CountedTriangle> LightVolumeMesh::read_back() const {
 }
 
 double LightVolumeMesh::seconds() const {
-  if (wall_clock_) return wall_seconds_;
+  if (wall_clock_ || !built_) return wall_seconds_;
   GLuint64 begin = 0, end = 0;
   glGetQueryObjectui64v(started_.id(), GL_QUERY_RESULT, &begin);  // waits for the GPU
   glGetQueryObjectui64v(finished_.id(), GL_QUERY_RESULT, &end);

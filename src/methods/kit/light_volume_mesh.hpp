@@ -116,7 +116,7 @@ private:
   int vertex_grid_ = 0, vertex_layers_ = 0;
   gpu::Buffer triangles_, extras_, eye_counts_;
   int eye_capacity_ = 0;
-  bool wall_clock_ = true;
+  bool wall_clock_ = true, built_ = false;
   gpu::Query started_, finished_;
   double wall_seconds_ = 0.0;
 };

@@ -544,6 +544,43 @@ TEST_P(LightVolume, NearestTexelFarthestAreOrderedAtEveryVertex) {
   context.check("light volume depths");
 }
 
+// A vertex's depth as the header defines it, computed here from the imported
+// map: texel = texel ⌊i·S/R⌋; nearest and farthest = the extremes of the
+// texels of the cells around the vertex. R dividing S, not dividing it,
+// and cells of 65² texels, which the shader reduces in 64² sub-blocks
+// (CELL_SPLIT, atomics). Grid vertex (i, j) is the first corner of cell (i, j)'s
+// first triangle.
+TEST(LightVolumeDepths, VertexDepthsAreTheirTexelOrTheExtremesOfTheirCells) {
+  gpu::Context& context = gpu::Context::headless();
+  for (const auto& [size, r] : {std::pair{128, 32}, std::pair{128, 48}, std::pair{2048, 32}}) {
+    Rig rig(Kind::spot, size, 29);
+    rig.render(rig.eye());
+    const glm::dvec3 l(rig.light().position);
+    for (const Depth mode : {Depth::texel, Depth::nearest, Depth::farthest}) {
+      const std::vector<CountedTriangle> records = built(rig, r, mode)->read_back();
+      double worst = 0.0;
+      for (int j = 0; j < r; ++j)
+        for (int i = 0; i < r; ++i) {
+          double expected = mode == Depth::nearest ? INFINITY : -INFINITY;
+          if (mode == Depth::texel) expected = rig.texel(0, i * size / r, j * size / r);  // i < R: never clamped
+          for (int cj = std::max(j - 1, 0); cj <= j && mode != Depth::texel; ++cj)
+            for (int ci = std::max(i - 1, 0); ci <= i; ++ci)
+              for (int y = cj * size / r; y < ((cj + 1) * size + r - 1) / r; ++y)
+                for (int x = ci * size / r; x < ((ci + 1) * size + r - 1) / r; ++x)
+                  expected = mode == Depth::nearest ? std::min(expected, rig.texel(0, x, y))
+                                                    : std::max(expected, rig.texel(0, x, y));
+          const glm::vec4 corner = records[2 * (static_cast<size_t>(j) * r + i)].corners[0];
+          worst = std::max(worst, std::abs(glm::length(glm::dvec3(corner) - l) - expected) / expected);
+        }
+      std::printf("spot S=%d R=%d depth=%d: vertex distances against their texel or their cells' extremes: worst "
+                  "relative error %.2g\n",
+                  size, r, static_cast<int>(mode), worst);
+      EXPECT_LT(worst, 1e-5);
+    }
+  }
+  context.check("light volume extremes");
+}
+
 // ---- airlight's own maps ----------------------------------------------------------------------
 
 // three_lights with the frame's own maps (a cube for the point light, a
@@ -604,7 +641,11 @@ TEST(LightVolumeTime, BuildAt256And1024FromA1024Map) {
         LightVolumeMesh mesh(r, depth);
         mesh.prepare();
         mesh.build(rig.frame);  // compiles
-        mesh.build(rig.frame);
+        double best = 1e30;  // the fastest of three: the machine may be busy
+        for (int k = 0; k < 3; ++k) {
+          mesh.build(rig.frame);
+          best = std::min(best, mesh.seconds());
+        }
         if (r == 1024 && depth == Depth::texel) {
           // More records than one SSBO binding holds on llvmpipe: written in ranges, every one of them.
           const std::vector<CountedTriangle> records = mesh.read_back();
@@ -616,7 +657,7 @@ TEST(LightVolumeTime, BuildAt256And1024FromA1024Map) {
           EXPECT_EQ(written, records.size());
         }
         std::printf("%s 1024^2 map, R=%d, depth=%d: %d triangles built in %.1f ms\n", name(kind), r,
-                    static_cast<int>(depth), mesh.triangle_count(), 1e3 * mesh.seconds());
+                    static_cast<int>(depth), mesh.triangle_count(), 1e3 * best);
         EXPECT_GT(mesh.seconds(), 0.0);
       }
   }
