@@ -11,7 +11,9 @@
 //    stored surface are inside / outside the read-back mesh by ray parity;
 // 3. eye counts: 0 inside, 1 outside, and the mesh's parity at random eyes;
 // 4. nearest ≤ texel ≤ farthest at every vertex.
+#include "core/metrics.hpp"
 #include "gpu/context.hpp"
+#include "gpu/program.hpp"
 #include "gpu/gl.hpp"
 #include "methods/kit/light_volume_mesh.hpp"
 #include "methods/kit/scene_frame.hpp"
@@ -627,6 +629,46 @@ TEST(LightVolumeOwnMaps, ThreeLightsClosedOutwardAndEyeCountsAgree) {
     }
   }
   context.check("light volume own maps");
+}
+
+// ---- the contract with LitIntervalPass ------------------------------------------------------
+
+// The mesh (texel depths, R = S) and its eye counts handed to LitIntervalPass:
+// Γ over the stretches where each light's count is 0 gives raymarch's image
+// from the same maps (up to the march's error and a texel's worth of shadow
+// edges), from the scene's camera and from a camera inside a light's volume.
+TEST(LightVolumeAirlight, CountingTheMeshGivesRaymarchsImage) {
+  gpu::Context& context = gpu::Context::headless();
+  constexpr int w = 48, h = 36, s = 128;
+  for (const char* name : {"teapot_spot", "three_lights"}) {
+    Scene scene = builtin_scene(name);
+    for (const bool moved : {false, true}) {
+      if (moved) scene.camera.position = scene.lights[0].position + 0.5f * glm::normalize(scene.lights[0].direction);
+      const Image marched = test::render(find_method("raymarch"), scene,
+                                         {"steps=256", "shadow_resolution=" + std::to_string(s)}, w, h).airlight;
+      SceneFrame frame;
+      frame.prepare(scene);
+      PassTimer timer;
+      frame.render(frame_inputs(scene, w, h), FrameSettings{s, 1.0f}, nullptr, {true, false}, timer);
+      LightVolumeMesh mesh(s, Depth::texel);
+      mesh.prepare();
+      mesh.build(frame);
+      LitIntervalPass pass{Settings(lit_interval_settings())};
+      pass.prepare();
+      const gpu::Texture target = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, w, h);
+      pass.run(frame, mesh.read_back(), mesh.eye_counts(), target, timer);
+      const Image counted = gpu::read_image(target, w, h);
+      const ImageError e = compare_images(counted, marched);
+      std::string counts;
+      for (const int c : mesh.eye_counts()) counts += std::to_string(c);
+      std::printf("%s%s: %d triangles, eye counts %s; counted against raymarch (N = 256): rRMSE %.4f, max abs %.4g "
+                  "(mean %.4g)\n",
+                  name, moved ? " (camera in light 0's volume)" : "", mesh.triangle_count(), counts.c_str(), e.rel_rmse,
+                  e.max_abs, e.mean_reference);
+      EXPECT_LT(e.rel_rmse, 0.05);
+    }
+  }
+  context.check("light volume airlight");
 }
 
 // ---- build time ------------------------------------------------------------------------------
