@@ -7,13 +7,15 @@
 //   PASS_GRID_TRIANGLES  two triangles per cell
 //   PASS_EXTRA_TRIANGLES the side walls (spot), or walls, skirt and cap (directional)
 //   PASS_EYE             whether the frame's eye is inside: 0, else 1
+//   PASS_SEAMS           cubes: each face's border vertices copied from the face that owns them
 // Specialized by defines: VOLUME_KIND (the light's mesh), DEPTH_MODE (a
 // vertex's depth), PASS, CELL_SPLIT (a cell's texels reduced by several
 // invocations). No runtime branch on the light's kind.
 //
 // Vertices are computed once and read by every triangle that uses them (the
-// grid's in an image, the rest in a buffer), so corners shared by triangles,
-// cube seams included, are the same bits.
+// grid's in an image, the rest in a buffer), so corners shared by triangles
+// are the same bits; a cube's edge and corner vertices are computed by the
+// face that owns them and copied to the others' slots.
 #include "methods/kit/frame_data.glsl"
 #include "optics/constants.glsl"
 
@@ -29,6 +31,7 @@
 #define PASS_GRID_TRIANGLES 3
 #define PASS_EXTRA_TRIANGLES 4
 #define PASS_EYE 5
+#define PASS_SEAMS 6
 
 layout(local_size_x = 64) in;
 
@@ -218,16 +221,8 @@ float orientation(int face) {
 #endif
 }
 
-// Grid vertex v of face `face`, as its owner computed it.
-vec3 grid_vertex(int face, ivec2 v) {
-#if VOLUME_KIND == KIND_CUBE
-  ivec3 p = lattice(face, v);
-  int f = owner(p);
-  return imageLoad(vertices, ivec3(face_coords(f, p), f)).xyz;
-#else
-  return imageLoad(vertices, ivec3(v, 0)).xyz;
-#endif
-}
+// Grid vertex v of face `face` (on a cube's seams, the owner's copy).
+vec3 grid_vertex(int face, ivec2 v) { return imageLoad(vertices, ivec3(v, face)).xyz; }
 
 // Vertex s of the grid's border, counter-clockwise in (i, j): bottom, right, top, left.
 ivec2 border(int s) {
@@ -473,6 +468,17 @@ void eye() {
 }
 #endif
 
+#if PASS == PASS_SEAMS
+// Border slot k of face `face` (6·4R items): its owner's vertex, unless it is the owner.
+void seams(uint item) {
+  int ring = 4 * grid, face = int(item) / ring;
+  ivec2 v = border(int(item) % ring);
+  ivec3 p = lattice(face, v);
+  int f = owner(p);
+  if (f != face) imageStore(vertices, ivec3(v, face), imageLoad(vertices, ivec3(face_coords(f, p), f)));
+}
+#endif
+
 void main() {
   uint local = local_item();
   if (local >= uint(item_count)) return;
@@ -487,7 +493,9 @@ void main() {
   grid_triangles(item, local);
 #elif PASS == PASS_EXTRA_TRIANGLES
   extra_triangles(item, local);
-#else
+#elif PASS == PASS_EYE
   eye();
+#else
+  seams(item);
 #endif
 }

@@ -24,7 +24,7 @@ constexpr GLsizeiptr record_bytes = sizeof(CountedTriangle);
 constexpr GLsizeiptr word_bytes = 16;  // a uvec4: records are five
 static_assert(sizeof(CountedTriangle) == 5 * word_bytes, "CountedTriangle is five vec4s (lit_intervals.glsl)");
 
-enum Pass { cells_pass, grid_vertices_pass, extra_vertices_pass, grid_triangles_pass, extra_triangles_pass, eye_pass };
+enum Pass { cells_pass, grid_vertices_pass, extra_vertices_pass, grid_triangles_pass, extra_triangles_pass, eye_pass, seams_pass };
 
 // The first `count` values of "#define NAME int[](a, b, …)" in the frame's defines.
 std::vector<int> defined_ints(const std::string& defines, const std::string& name, int count) {
@@ -253,6 +253,7 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
     dispatch_items(use(cells_pass), 0, cells * static_cast<GLuint>(sub_blocks * sub_blocks));
   }
   dispatch_items(use(grid_vertices_pass), 0, static_cast<GLuint>(faces * (r + 1) * (r + 1)));
+  if (kind == Kind::cube) dispatch_items(use(seams_pass), 0, static_cast<GLuint>(6 * 4 * r));
   const GLsizei first = ranges_[static_cast<size_t>(light)].first;
   write_records(use(grid_triangles_pass), first, cells, 2);
   if (kind != Kind::cube) {
