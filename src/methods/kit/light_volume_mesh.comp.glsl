@@ -209,9 +209,9 @@ vec3 grid_position(ivec2 v, ivec3 p, float depth) {
 // handedness of face `face`'s (or the map's) NDC → direction mapping.
 float orientation(int face) {
 #if VOLUME_KIND == KIND_CUBE
-  vec3 a = cube_direction(face, vec2(-1.0)), b = cube_direction(face, vec2(1.0, -1.0)),
-       c = cube_direction(face, vec2(1.0));
-  return dot(a, cross(b, c)) > 0.0 ? 1.0 : -1.0;
+  // det(cube_direction(f, (−1, −1)), (1, −1), (1, 1)) = −4 on every face: GL's
+  // faces, seen from the cube's centre, all map (s, t) the same way round.
+  return -1.0;
 #elif VOLUME_KIND == KIND_SPOT
   vec3 a = map_ray(vec2(-1.0)), b = map_ray(vec2(1.0, -1.0)), c = map_ray(vec2(1.0));
   return dot(a, cross(b, c)) > 0.0 ? 1.0 : -1.0;

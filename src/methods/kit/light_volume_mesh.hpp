@@ -17,8 +17,8 @@
 //   volume is the frustum cut by the displaced grid.
 // - point light or wide spot (cube map): the six faces' grids. A vertex on a
 //   cube edge or corner is computed once, by the first face that holds it (a
-//   canonical lattice point on the cube's surface), and every cell of every
-//   face reads that one value: the mesh is closed across the seams, bit for bit.
+//   canonical lattice point on the cube's surface), and copied into the other
+//   faces' slots: the mesh is closed across the seams, bit for bit.
 // - directional (orthographic 2D map): the grid moved along the light's travel
 //   to the stored depth, closed by vertical walls down to a "far" ring, a skirt
 //   at that depth out to an extent that holds every point the frame can see,
