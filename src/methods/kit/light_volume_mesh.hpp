@@ -1,0 +1,124 @@
+#pragma once
+// The light volume mesh (Kingston 2018 §4.3.1, after McCool 2000): per frame,
+// on the GPU, a closed triangle mesh around each light's lit region, made from
+// the light's shadow map as the frame drew it (airlight's own, or an engine's
+// converted into the same textures). McCool turns a shadow map into shadow
+// volumes by treating it as a terrain: its texels' depths displace a grid, so
+// the mesh costs O(R²) for an R² grid whatever the scene's geometry, and a
+// compute shader rebuilds it every frame. Methods count a view ray's crossings
+// with it (LitIntervalPass) to find the stretches where the light arrives
+// instead of marching through the shadow map (Kingston §4.3.2).
+//
+// The mesh, per light (light_volume_mesh.comp.glsl):
+// - spot, 2D map through its shadow_matrix (a perspective frustum): a grid of
+//   (R+1)² vertices over the map's NDC square, each the light's position moved
+//   along the texel's ray to the distance taken from the map, closed by side
+//   walls from the grid's border to the light's position (the apex). The
+//   volume is the frustum cut by the displaced grid.
+// - point light or wide spot (cube map): the six faces' grids. A vertex on a
+//   cube edge or corner is computed once, by the first face that holds it (a
+//   canonical lattice point on the cube's surface), and copied into the other
+//   faces' slots: the mesh is closed across the seams, bit for bit.
+// - directional (orthographic 2D map): the grid moved along the light's travel
+//   to the stored depth, closed by vertical walls down to a "far" ring, a skirt
+//   at that depth out to an extent that holds every point the frame can see,
+//   walls up to a cap upstream of every such point, and the cap. The map's own
+//   near plane and square would leave out lit fog the eye sees (above the
+//   scene's bounds, or beside them, where the map says "no occluder"); the
+//   skirt keeps it inside.
+// Every vertex is shared by its cells (a height field needs no stitching at
+// depth discontinuities: the steep triangles between a near and a far texel
+// are the shadow's sides). Where the map holds +∞ or its clear value (no
+// occluder), and wherever it is farther than that, the depth is the frame's
+// backplate distance, 2·(|eye − light| + camera far) + 1 (for a directional
+// light: 2·far + 1 past the eye's depth), beyond every visible point, so the
+// mesh stays finite and closed.
+//
+// A vertex's depth from the texels around it (Depth): texel = the texel that
+// holds the vertex's direction (vertex i of R takes texel ⌊i·S/R⌋, the last
+// clamped to S − 1; the lit_volume method uses R = S); nearest and farthest =
+// the minimum and maximum over every texel of the grid cells that share the
+// vertex: meshes inside and outside every texel's surface, the [front, back]
+// interval a ray marcher needs.
+//
+// Triangles are CountedTriangle records (lit_intervals.glsl's layout, written
+// in the shader as five uvec4 words each) with weight +1 and the light's index,
+// their unit normal (float, from the corners) pointing OUT of the lit volume
+// and plane.w = n·a at the first corner, as crossings.frag.glsl expects: a view
+// ray's count, started at eye_counts() (0 inside, 1 outside), is 0 exactly
+// where it is inside the volume. Lights without a shadow map (SHADOW_NONE:
+// nothing can occlude them) get no triangles and an eye count of 0: their lit
+// region is all of space (a spot's cone is the light map's business).
+//
+// GPU limits: an SSBO binding holds at most GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+// bytes (128 MiB on llvmpipe, 1.68 M records); the build writes through bound
+// ranges no larger than that (max_records_per_binding()), and a pass that
+// reads triangles() must do the same when triangle_count() exceeds it. An R²
+// spot grid is 2R² + 4R triangles (R = 1024: 168 MB), a cube 12R², a
+// directional light 2R² + 12R + 14.
+#include "gpu/gl.hpp"
+#include "methods/kit/lit_interval_pass.hpp"
+#include "methods/kit/scene_frame.hpp"
+
+#include <airlight/settings.hpp>
+#include <vector>
+
+namespace airlight::kit {
+
+// Settings the methods built on the mesh share: "volume_resolution" (integer,
+// cells per side of each map's grid, 32 to 4096, default 256, clamped to the
+// map's resolution).
+std::vector<SettingSpec> light_volume_settings();
+
+class LightVolumeMesh {
+public:
+  enum class Depth { texel, nearest, farthest };  // a vertex's distance (above)
+  enum class Kind { none, spot, cube, directional };  // the mesh a light gets, from its shadow map
+
+  LightVolumeMesh(int resolution, Depth depth);
+
+  // GL objects; needs a current context.
+  void prepare();
+
+  // After the frame's shadow maps are drawn: every light's mesh into one
+  // buffer of CountedTriangle records, lights in order, and each light's eye
+  // count. Binds the frame (SceneFrame::bind) and leaves image units 0–2 and
+  // storage bindings from binding::first_free_storage bound to its own objects.
+  void build(const SceneFrame& frame);
+
+  const gpu::Buffer& triangles() const { return triangles_; }
+  GLsizei triangle_count() const { return triangle_count_; }  // this frame's, all lights
+  // Per light: 0 if the frame's eye is inside its lit volume, 1 if not (read
+  // from the GPU, where the eye's cell of the mesh decides it).
+  std::vector<int> eye_counts() const;
+  std::vector<CountedTriangle> read_back() const;  // for tests and reports
+  double seconds() const;  // the last build's GPU time (glFinish-bracketed on llvmpipe, else timestamps)
+
+  // Each light's records are [first, first + count) of triangles().
+  struct LightRange {
+    Kind kind = Kind::none;
+    GLsizei first = 0, count = 0;
+  };
+  const std::vector<LightRange>& light_ranges() const { return ranges_; }
+  int grid_resolution() const { return grid_; }  // R of the last build: the setting, clamped to the maps' size
+  GLsizei max_records_per_binding() const { return max_records_; }
+
+private:
+  void build_light(int light, Kind kind, const SceneFrame& frame);
+  void allocate(int grid, int layers, GLsizei triangles, int lights);
+
+  int resolution_;
+  Depth depth_;
+  int grid_ = 0, map_size_ = 0;
+  GLsizei triangle_count_ = 0, triangle_capacity_ = 0, max_records_ = 0;
+  std::vector<LightRange> ranges_;
+  gpu::Texture vertices_, cell_low_, cell_high_;
+  int vertex_grid_ = 0, vertex_layers_ = 0;
+  gpu::Buffer triangles_, extras_, eye_counts_;
+  int eye_capacity_ = 0;
+  bool wall_clock_ = true, built_ = false;
+  gpu::Query started_, finished_;
+  double wall_seconds_ = 0.0;
+};
+
+}  // namespace airlight::kit
