@@ -241,14 +241,28 @@ uint local_item() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * g
 // ---- the passes ------------------------------------------------------------------
 
 void write_triangle(uint index, vec3 a, vec3 b, vec3 c) {
-  vec3 n = cross(b - a, c - a);
+  // The plane from the corner opposite the longest edge (the same orientation
+  // as cross(b − a, c − a)): a shadow's side is a sliver a texel wide and the
+  // backplate's distance long, and the cross product of its two long edges,
+  // nearly parallel, loses the normal's direction in float, the crossing's t
+  // with it (lost crossings were single wrong pixels).
+  vec3 ab = b - a, bc = c - b, ca = a - c;
+  float lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
+  vec3 apex = a, n = cross(ab, -ca);
+  if (lab >= lbc && lab >= lca) {
+    apex = c;
+    n = cross(ca, -bc);
+  } else if (lca >= lab && lca >= lbc) {
+    apex = b;
+    n = cross(bc, -ab);
+  }
   float length_n = length(n);
   n = length_n > 0.0 ? n / length_n : vec3(0.0);  // degenerate: no crossing (t is not finite)
   uint w = uint(word_offset) + 5u * index;
   records[w] = floatBitsToUint(vec4(a, 1.0));
   records[w + 1u] = floatBitsToUint(vec4(b, 1.0));
   records[w + 2u] = floatBitsToUint(vec4(c, 1.0));
-  records[w + 3u] = floatBitsToUint(vec4(n, dot(n, a)));
+  records[w + 3u] = floatBitsToUint(vec4(n, dot(n, apex)));
   records[w + 4u] = uvec4(uint(light_index), 1u, 0u, 0u);
 }
 

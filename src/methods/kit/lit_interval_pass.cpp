@@ -3,6 +3,7 @@
 #include "gpu/program.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <glm/geometric.hpp>
 
 namespace airlight::kit {
@@ -51,6 +52,15 @@ void LitIntervalPass::prepare() {
   fbo_ = gpu::make_framebuffer();
   no_vertices_ = gpu::make_vertex_array();  // the triangles come from their buffer by gl_VertexID
   node_count_ = gpu::make_buffer(2 * sizeof(GLuint), nullptr);
+  // A storage binding holds at most GL_MAX_SHADER_STORAGE_BLOCK_SIZE bytes
+  // (128 MiB on llvmpipe: 1.68 M triangles); larger sets are drawn in ranges
+  // whose offsets keep the binding's alignment.
+  GLint64 block = 0;
+  GLint align = 16;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
+  const size_t step = static_cast<size_t>(align) / std::gcd(static_cast<size_t>(align), sizeof(CountedTriangle));
+  range_triangles_ = std::max<size_t>(static_cast<size_t>(block) / sizeof(CountedTriangle) / step * step, step);
   if (epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
     GLuint id = 0;
     glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
@@ -134,7 +144,6 @@ void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles
       {{GL_VERTEX_SHADER, "methods/kit/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/crossings.frag.glsl"}},
       frame.defines() + defines());
   glUseProgram(program.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
   glBindImageTexture(0, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
@@ -146,7 +155,13 @@ void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles
   glEnable(GL_DEPTH_CLAMP);
   glBindVertexArray(no_vertices_.id());
   if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count));
+  for (size_t first = 0; first < triangle_count; first += range_triangles_) {
+    const size_t count = std::min(range_triangles_, triangle_count - first);
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles.id(),
+                      static_cast<GLintptr>(first * sizeof(CountedTriangle)),
+                      static_cast<GLsizeiptr>(count * sizeof(CountedTriangle)));
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * count));
+  }
   if (invocations_) {
     glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
     GLuint64 count = 0;

@@ -69,6 +69,7 @@ private:
   int samples_;
   gpu::Buffer triangles_, nodes_, node_count_;
   size_t triangle_capacity_ = 0, node_capacity_ = 0;
+  size_t range_triangles_ = 1;  // triangles per storage binding
   gpu::Texture heads_;
   gpu::Framebuffer fbo_;
   gpu::VertexArray no_vertices_;
