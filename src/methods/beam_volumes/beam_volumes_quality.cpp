@@ -14,6 +14,9 @@ const Case rows[] = {
   {"beam_volumes", "nilsson_multiple", {}, 0.01, "exact shadows of 25 objects (measured 0.0023: the reference's 32 segments beside the apex)"},
   {"beam_volumes", "nilsson_parallel", {}, 0.01, "exact shadows, prisms toward a directional beam (measured 0.0018)"},
   {"beam_volumes", "biri_sphere", {}, 0.01, "exact shadows (measured 1e-4)"},
+  {"beam_volumes", "teapot_spot", {}, 0.01,
+   "exact shadows of 4160 triangles, whose pyramids' sides meet edge-on in many places: each crossing decided by "
+   "an exact ray test, not the rasterizer's snapped coverage (measured 7e-4; 0.019 before, from one pixel)"},
 };
 // clang-format on
 

@@ -12,6 +12,7 @@
 #include "methods/kit/lit_intervals.glsl"
 
 flat in int triangle;
+flat in int exact;
 layout(location = 0) out vec4 airlight;
 
 void main() {
@@ -19,6 +20,7 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec3 dir = pixel_ray(gl_FragCoord.xy);
   CountedTriangle c = counted[triangle];
+  if (!covers(exact, c, dir)) discard;
   float facing = dot(c.plane.xyz, dir);
   float t = min((c.plane.w - dot(c.plane.xyz, frame.eye)) / facing, surface_distance(pixel));
   vec3 sum = vec3(0.0);

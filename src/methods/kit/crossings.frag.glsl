@@ -11,11 +11,13 @@
 layout(r32ui, binding = 0) uniform coherent uimage2D heads;
 
 flat in int triangle;
+flat in int exact;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec3 dir = pixel_ray(gl_FragCoord.xy);
   CountedTriangle c = counted[triangle];
+  if (!covers(exact, c, dir)) return;
   float facing = dot(c.plane.xyz, dir);
   float t = (c.plane.w - dot(c.plane.xyz, frame.eye)) / facing;
   if (!(t > 0.0 && t < surface_distance(pixel))) return;  // behind the eye, beyond the surface, or grazing (NaN)

@@ -30,3 +30,34 @@ layout(std430, binding = BINDING_NODE_COUNT) coherent buffer CountBlock {
 uint pack_crossing(int light, int change) { return (uint(light) << 16) | uint(change + 32768); }
 int crossing_light(uint bits) { return int(bits >> 16); }
 int crossing_change(uint bits) { return int(bits & 0xffffu) - 32768; }
+
+// Whether the ray from `origin` along `dir` passes through triangle (a, b, c):
+// the watertight test of Woop, Benthin & Wald 2013, in a frame sheared so the
+// ray runs along an axis. An edge's function is a 2×2 determinant of its two
+// corners, so the two triangles that share an edge get exactly opposite
+// values: no ray passes between them.
+bool ray_crosses(vec3 origin, vec3 dir, vec3 a, vec3 b, vec3 c) {
+  vec3 d = abs(dir);
+  int kz = d.x > d.y ? (d.x > d.z ? 0 : 2) : (d.y > d.z ? 1 : 2);
+  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  if (dir[kz] < 0.0) {
+    int swap = kx;
+    kx = ky;
+    ky = swap;
+  }
+  vec2 shear = vec2(dir[kx], dir[ky]) / dir[kz];
+  vec3 pa = a - origin, pb = b - origin, pc = c - origin;
+  vec2 A = vec2(pa[kx], pa[ky]) - shear * pa[kz];
+  vec2 B = vec2(pb[kx], pb[ky]) - shear * pb[kz];
+  vec2 C = vec2(pc[kx], pc[ky]) - shear * pc[kz];
+  float u = C.x * B.y - C.y * B.x, v = A.x * C.y - A.y * C.x, w = B.x * A.y - B.y * A.x;
+  bool negative = u < 0.0 || v < 0.0 || w < 0.0, positive = u > 0.0 || v > 0.0 || w > 0.0;
+  return !(negative && positive) && u + v + w != 0.0;
+}
+
+// Whether a fragment of counted triangle c (crossings.vert.glsl: `exact` when
+// it was drawn grown) stands for a crossing of the pixel's ray along `dir`.
+bool covers(int exact, CountedTriangle c, vec3 dir) {
+  return exact == 0 || ray_crosses(frame.eye, dir, c.corners[0].xyz / c.corners[0].w,
+                                   c.corners[1].xyz / c.corners[1].w, c.corners[2].xyz / c.corners[2].w);
+}
