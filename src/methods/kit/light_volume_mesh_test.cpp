@@ -673,37 +673,25 @@ TEST(LightVolumeAirlight, CountingTheMeshGivesRaymarchsImage) {
 
 // ---- build time ------------------------------------------------------------------------------
 
-TEST(LightVolumeTime, BuildAt256And1024FromA1024Map) {
+// A 1024² grid over a spot's 1024² map is 2.1 M records, more than one storage
+// binding holds on llvmpipe (1.68 M): the build writes them through several
+// bound ranges, and every record must come out written (the build's time is
+// the benchmark's business, docs/decisions.md).
+TEST(LightVolumeRanges, EveryRecordWrittenBeyondOneBinding) {
   gpu::Context& context = gpu::Context::headless();
-  for (const Kind kind : {Kind::spot, Kind::point}) {
-    Rig rig(kind, 1024, 19);
-    rig.render(rig.eye());
-    for (const int r : kind == Kind::spot ? std::vector<int>{256, 1024} : std::vector<int>{256})
-      for (const Depth depth : {Depth::texel, Depth::nearest}) {
-        LightVolumeMesh mesh(r, depth);
-        mesh.prepare();
-        mesh.build(rig.frame);  // compiles
-        double best = 1e30;  // the fastest of three: the machine may be busy
-        for (int k = 0; k < 3; ++k) {
-          mesh.build(rig.frame);
-          best = std::min(best, mesh.seconds());
-        }
-        if (r == 1024 && depth == Depth::texel) {
-          // More records than one SSBO binding holds on llvmpipe: written in ranges, every one of them.
-          const std::vector<CountedTriangle> records = mesh.read_back();
-          size_t written = 0;
-          for (const CountedTriangle& t : records)
-            written += t.light_weight == glm::ivec4(0, 1, 0, 0) && std::abs(glm::length(glm::vec3(t.plane)) - 1.0f) < 1e-4f;
-          std::printf("%zu records, %zu written (%d per binding)\n", records.size(), written,
-                      mesh.max_records_per_binding());
-          EXPECT_EQ(written, records.size());
-        }
-        std::printf("%s 1024^2 map, R=%d, depth=%d: %d triangles built in %.1f ms\n", name(kind), r,
-                    static_cast<int>(depth), mesh.triangle_count(), 1e3 * best);
-        EXPECT_GT(mesh.seconds(), 0.0);
-      }
-  }
-  context.check("light volume time");
+  Rig rig(Kind::spot, 1024, 19);
+  rig.render(rig.eye());
+  LightVolumeMesh mesh(1024, Depth::texel);
+  mesh.prepare();
+  mesh.build(rig.frame);
+  const std::vector<CountedTriangle> records = mesh.read_back();
+  size_t written = 0;
+  for (const CountedTriangle& t : records)
+    written += t.light_weight == glm::ivec4(0, 1, 0, 0) && std::abs(glm::length(glm::vec3(t.plane)) - 1.0f) < 1e-4f;
+  std::printf("%zu records, %zu written (%d per binding)\n", records.size(), written, mesh.max_records_per_binding());
+  EXPECT_GT(records.size(), static_cast<size_t>(mesh.max_records_per_binding()));
+  EXPECT_EQ(written, records.size());
+  context.check("light volume ranges");
 }
 
 }  // namespace
