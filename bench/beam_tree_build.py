@@ -14,13 +14,7 @@ import csv
 import math
 import sys
 
-
-def stat(row, name):
-    for kv in row['stats'].split():
-        key, value = kv.split('=')
-        if key == name:
-            return float(value)
-    return None
+from bench_csv import stat
 
 
 rows = list(csv.DictReader(open(sys.argv[1])))

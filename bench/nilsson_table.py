@@ -9,13 +9,7 @@ usage: bench/nilsson_table.py CSV
 import csv
 import sys
 
-
-def stat(row, name):
-    for kv in row['stats'].split():
-        key, value = kv.split('=')
-        if key == name:
-            return float(value)
-    return None
+from bench_csv import stat
 
 
 def spacing(row):

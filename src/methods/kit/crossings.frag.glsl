@@ -1,8 +1,9 @@
 // Per fragment of a counted triangle: where the pixel's ray crosses its plane,
 // in front of the visible surface, appended to the pixel's list, so the order
 // in which triangles are drawn does not matter. t comes from the exact
-// ray–plane intersection, not from interpolated depth; the rasterizer only
-// decides which pixels' rays cross the triangle, and does so watertight along
+// ray–plane intersection, not from interpolated depth. Which pixels' rays
+// cross the triangle: for a triangle drawn grown (crossings.vert.glsl), the
+// watertight ray test (covers); otherwise the rasterizer, watertight along
 // edges that two triangles share. Near-plane clipping is off (GL_DEPTH_CLAMP),
 // so crossings between the eye and the near plane count too.
 #include "methods/kit/scene.glsl"

@@ -90,20 +90,11 @@ float clamp_depth(float stored) {
 }
 
 #if VOLUME_KIND == KIND_CUBE
-// The direction from the light through (s, t) ∈ [−1, 1]² of cube face `face`
-// (GL's order +x −x +y −y +z −z; shadow_import.frag.glsl).
-vec3 cube_direction(int face, vec2 st) {
-  if (face == 0) return vec3(1.0, -st.y, -st.x);
-  if (face == 1) return vec3(-1.0, -st.y, st.x);
-  if (face == 2) return vec3(st.x, 1.0, st.y);
-  if (face == 3) return vec3(st.x, -1.0, -st.y);
-  if (face == 4) return vec3(st.x, -st.y, 1.0);
-  return vec3(-st.x, -st.y, -1.0);
-}
+#include "methods/kit/cube_faces.glsl"
 // Texel `texel` of a face, sampled at its centre (nearest: exactly that texel).
 float stored_depth(int face, ivec2 texel) {
   vec2 st = (2.0 * vec2(texel) + 1.0) / float(map_size) - 1.0;
-  return textureLod(shadow_cubes, vec4(cube_direction(face, st), float(LIGHT.shadow_layer)), 0.0).r;
+  return textureLod(shadow_cubes, vec4(cube_face_direction(face, st), float(LIGHT.shadow_layer)), 0.0).r;
 }
 #else
 float stored_depth(int face, ivec2 texel) { return texelFetch(shadow_maps, ivec3(texel, LIGHT.shadow_layer), 0).r; }
@@ -111,7 +102,7 @@ float stored_depth(int face, ivec2 texel) { return texelFetch(shadow_maps, ivec3
 
 // ---- the cube's surface lattice -------------------------------------------------
 // Grid vertex (i, j) of face f is lattice point P ∈ [0, R]³ on the cube's
-// surface, P = R·(cube_direction(f, s, t) + 1)/2 with s = 2i/R − 1, t = 2j/R − 1.
+// surface, P = R·(cube_face_direction(f, s, t) + 1)/2 with s = 2i/R − 1, t = 2j/R − 1.
 
 ivec3 lattice(int face, ivec2 v) {
   int R = grid;
@@ -209,7 +200,7 @@ vec3 grid_position(ivec2 v, ivec3 p, float depth) {
 // handedness of face `face`'s (or the map's) NDC → direction mapping.
 float orientation(int face) {
 #if VOLUME_KIND == KIND_CUBE
-  // det(cube_direction(f, (−1, −1)), (1, −1), (1, 1)) = −4 on every face: GL's
+  // det(cube_face_direction(f, (−1, −1)), (1, −1), (1, 1)) = −4 on every face: GL's
   // faces, seen from the cube's centre, all map (s, t) the same way round.
   return -1.0;
 #elif VOLUME_KIND == KIND_SPOT

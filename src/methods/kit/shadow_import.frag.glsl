@@ -30,21 +30,12 @@ const float FLT_MAX = 3.402823466e38;
 
 float ndc_z(float z) { return engine_zero_to_one ? z : 2.0 * z - 1.0; }
 
-// The direction from the light through cube texel (s, t) ∈ [−1, 1]² of `face`
-// (the OpenGL specification's cube map face selection, inverted).
-vec3 cube_direction(vec2 st) {
-  if (face == 0) return vec3(1.0, -st.y, -st.x);
-  if (face == 1) return vec3(-1.0, -st.y, st.x);
-  if (face == 2) return vec3(st.x, 1.0, st.y);
-  if (face == 3) return vec3(st.x, -1.0, -st.y);
-  if (face == 4) return vec3(st.x, -st.y, 1.0);
-  return vec3(-st.x, -st.y, -1.0);
-}
+#include "methods/kit/cube_faces.glsl"
 
 void main() {
   vec2 st = 2.0 * gl_FragCoord.xy / vec2(frame.shadow_resolution) - 1.0;
 #ifdef ENGINE_CUBE
-  vec3 dir = cube_direction(st);
+  vec3 dir = cube_face_direction(face, st);
   float z = texture(engine_map, dir).r;
   if (engine_distance) {
     out_distance = z;
