@@ -6,17 +6,19 @@
 // A triangle whose corners are all finite and in front of the eye is drawn
 // grown by COVER_MARGIN pixels on every side (each corner moved to where its
 // two edges, pushed out, meet; a sliver's sharp corners at most MITER_LIMIT
-// pixels), and its fragments decide whether their ray crosses it by an exact
+// margins), and its fragments decide whether their ray crosses it by an exact
 // test (crossings.frag.glsl): the rasterizer snaps corners to 1/256 pixel,
 // and where two slivers of a light volume's shadow side meet a pixel's centre
-// within that, it covered neither and lost the crossing.
+// within that, it covered neither and lost the crossing. 1/16 pixel clears
+// the snapping many times over; a whole pixel made every small triangle of a
+// light volume mesh cover its neighbours' pixels too (docs/decisions.md).
 #include "methods/kit/scene.glsl"
 #include "methods/kit/lit_intervals.glsl"
 
 flat out int triangle;
 flat out int exact;  // 1: the fragment tests its ray against the triangle
 
-const float COVER_MARGIN = 1.0;
+const float COVER_MARGIN = 1.0 / 16.0;
 const float MITER_LIMIT = 64.0;
 
 float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }

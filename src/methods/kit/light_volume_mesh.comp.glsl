@@ -1,11 +1,12 @@
 // The light volume mesh (methods/kit/light_volume_mesh.hpp; Kingston 2018
 // §4.3.1, McCool 2000): one light's shadow map turned into a closed mesh
 // around its lit region, in passes over one light at a time:
-//   PASS_CELLS           each grid cell's [min, max] stored depth (nearest / farthest only)
+//   PASS_CELLS           each grid cell's [min, max] stored depth (shell only)
 //   PASS_GRID_VERTICES   the (R+1)² displaced grid vertices per map or cube face
-//   PASS_EXTRA_VERTICES  the apex (spot), or the far ring, skirt and cap corners (directional)
-//   PASS_GRID_TRIANGLES  two triangles per cell
-//   PASS_EXTRA_TRIANGLES the side walls (spot), or walls, skirt and cap (directional)
+//   PASS_EXTRA_VERTICES  the apex (spot), or the far ring, skirt and cap corners (directional; texel only)
+//   PASS_GRID_TRIANGLES  two triangles per cell (shell: two per cell and surface)
+//   PASS_EXTRA_TRIANGLES the side walls (spot), or walls, skirt and cap (directional); shell: the
+//                        strips between the two surfaces' borders
 //   PASS_EYE             whether the frame's eye is inside: 0, else 1
 //   PASS_SEAMS           cubes: each face's border vertices copied from the face that owns them
 // Specialized by defines: VOLUME_KIND (the light's mesh), DEPTH_MODE (a
@@ -22,9 +23,8 @@
 #define KIND_SPOT 1
 #define KIND_CUBE 2
 #define KIND_DIRECTIONAL 3
-#define DEPTH_TEXEL 0
-#define DEPTH_NEAREST 1
-#define DEPTH_FARTHEST 2
+#define DEPTH_TEXEL 0  // LightVolumeMesh::Depth
+#define DEPTH_SHELL 1
 #define PASS_CELLS 0
 #define PASS_GRID_VERTICES 1
 #define PASS_EXTRA_VERTICES 2
@@ -40,7 +40,8 @@ layout(std430, binding = BINDING_LIGHTS) readonly buffer SceneLights { SceneLigh
 layout(binding = BINDING_SHADOW_MAPS) uniform sampler2DArray shadow_maps;
 layout(binding = BINDING_SHADOW_CUBES) uniform samplerCubeArray shadow_cubes;
 
-// Grid vertex (i, j) of cube face `face` (layer 0 for 2D maps): xyz.
+// Grid vertex (i, j) of cube face `face` (layer 0 for 2D maps): xyz; a
+// shell's outer surface in layers FACES to 2·FACES − 1.
 layout(rgba32f, binding = 0) uniform image2DArray vertices;
 // A cell's [min, max] stored depth as order-preserving bits (order_bits).
 layout(r32ui, binding = 1) uniform uimage2DArray cell_low;
@@ -68,6 +69,17 @@ uniform int sub_blocks;        // CELL_SPLIT: sub-blocks per cell side
 const int CELL_BLOCK = 64;  // texels per side that one invocation reduces
 
 #define LIGHT lights[light_index]
+
+#if VOLUME_KIND == KIND_CUBE
+const int FACES = 6;
+#else
+const int FACES = 1;
+#endif
+#if DEPTH_MODE == DEPTH_SHELL
+const int SURFACES = 2;  // the inner surface (layer face), the outer (face + FACES)
+#else
+const int SURFACES = 1;
+#endif
 
 // ---- depths ---------------------------------------------------------------------
 
@@ -212,8 +224,9 @@ float orientation(int face) {
 #endif
 }
 
-// Grid vertex v of face `face` (on a cube's seams, the owner's copy).
-vec3 grid_vertex(int face, ivec2 v) { return imageLoad(vertices, ivec3(v, face)).xyz; }
+// Grid vertex v of vertex layer `layer` (face + surface·FACES; on a cube's
+// seams, the owner's copy).
+vec3 grid_vertex(int layer, ivec2 v) { return imageLoad(vertices, ivec3(v, layer)).xyz; }
 
 // Vertex s of the grid's border, counter-clockwise in (i, j): bottom, right, top, left.
 ivec2 border(int s) {
@@ -300,18 +313,48 @@ void cells(uint item) {
 #endif
 
 #if PASS == PASS_GRID_VERTICES
-// The min (nearest) or max (farthest) over the cells of `face` around vertex v.
-void gather_cells(int face, ivec2 v, inout float depth) {
+#if DEPTH_MODE == DEPTH_SHELL
+// The largest angle, seen from the light, between two corners of a grid cell:
+// its diagonal at the map's (or face's) centre, where a rectilinear map's
+// cells are widest.
+float cos_widest_cell() {
+#if VOLUME_KIND == KIND_CUBE
+  return 1.0 / sqrt(1.0 + 8.0 / float(grid * grid));
+#else
+  return dot(normalize(map_ray(vec2(0.0))), normalize(map_ray(vec2(2.0 / float(grid)))));
+#endif
+}
+
+// An outer vertex's distance, from the farthest stored depth of its cells:
+// moved past where the shadow test stops calling points lit (scene.glsl's
+// shadow_visibility: x is lit while its distance r satisfies
+// r − b·(k·r + c)/S ≤ stored, the bias b in texels of size (k·r + c)/S), and,
+// for a light at a point, past the chords between a cell's corners: a point of
+// a triangle whose corners lie at distances ≥ D, at angles ≤ α apart as seen
+// from the light, is at distance ≥ D·cos α (its projection on one corner's
+// direction). An inner vertex needs neither: a triangle whose corners lie
+// within distance D of the light lies within it (the ball is convex), and the
+// bias only moves the boundary out.
+float beyond_lit(float stored) {
+  float b = frame.shadow_bias / frame.shadow_resolution;
+#if VOLUME_KIND == KIND_DIRECTIONAL
+  return stored + b * LIGHT.texel_constant;
+#else
+  float r = (stored + b * LIGHT.texel_constant) / max(1.0 - b * LIGHT.texel_per_distance, 1e-6);
+  return r / cos_widest_cell();
+#endif
+}
+
+// The extremes of the stored depths over the cells of `face` around vertex v.
+void gather_cells(int face, ivec2 v, inout float low, inout float high) {
   ivec2 lo = max(v - 1, ivec2(0)), hi = min(v, ivec2(grid - 1));
   for (int y = lo.y; y <= hi.y; ++y)
     for (int x = lo.x; x <= hi.x; ++x) {
-#if DEPTH_MODE == DEPTH_NEAREST
-      depth = min(depth, from_order_bits(imageLoad(cell_low, ivec3(x, y, face)).r));
-#else
-      depth = max(depth, from_order_bits(imageLoad(cell_high, ivec3(x, y, face)).r));
-#endif
+      low = min(low, from_order_bits(imageLoad(cell_low, ivec3(x, y, face)).r));
+      high = max(high, from_order_bits(imageLoad(cell_high, ivec3(x, y, face)).r));
     }
 }
+#endif
 
 void grid_vertices(uint item) {
   int n = grid + 1;
@@ -323,22 +366,20 @@ void grid_vertices(uint item) {
 #endif
 #if DEPTH_MODE == DEPTH_TEXEL
   float depth = clamp_depth(stored_depth(face, min(v * map_size / grid, ivec2(map_size - 1))));
+  imageStore(vertices, ivec3(v, face), vec4(grid_position(v, p, depth), 1.0));
 #else
-#if DEPTH_MODE == DEPTH_NEAREST
-  float depth = positive_infinity();
-#else
-  float depth = -positive_infinity();
-#endif
+  float low = positive_infinity(), high = -positive_infinity();
 #if VOLUME_KIND == KIND_CUBE
   // Every cell around the lattice point, on every face that holds it (constant faces: unrolled).
-#define GATHER_FACE(f) if (on_face(f, p)) gather_cells(f, face_coords(f, p), depth);
+#define GATHER_FACE(f) if (on_face(f, p)) gather_cells(f, face_coords(f, p), low, high);
   GATHER_FACE(0) GATHER_FACE(1) GATHER_FACE(2) GATHER_FACE(3) GATHER_FACE(4) GATHER_FACE(5)
 #undef GATHER_FACE
 #else
-  gather_cells(0, v, depth);
+  gather_cells(0, v, low, high);
 #endif
+  imageStore(vertices, ivec3(v, face), vec4(grid_position(v, p, low), 1.0));
+  imageStore(vertices, ivec3(v, face + FACES), vec4(grid_position(v, p, beyond_lit(high)), 1.0));
 #endif
-  imageStore(vertices, ivec3(v, face), vec4(grid_position(v, p, depth), 1.0));
 }
 #endif
 
@@ -363,19 +404,43 @@ void extra_vertices(uint item) {
 #endif
 
 #if PASS == PASS_GRID_TRIANGLES
+// Cell c's two triangles on vertex layer `layer`, from record `index`.
+void cell_triangles(uint index, float o, int layer, ivec2 c) {
+  vec3 v00 = grid_vertex(layer, c), v10 = grid_vertex(layer, c + ivec2(1, 0));
+  vec3 v01 = grid_vertex(layer, c + ivec2(0, 1)), v11 = grid_vertex(layer, c + ivec2(1));
+  write_oriented(index, o, v00, v10, v11);
+  write_oriented(index + 1u, o, v00, v11, v01);
+}
+
 void grid_triangles(uint item, uint local) {
   int R = grid;
   int face = int(item / uint(R * R)), rest = int(item % uint(R * R));
   ivec2 c = ivec2(rest % R, rest / R);
-  vec3 v00 = grid_vertex(face, c), v10 = grid_vertex(face, c + ivec2(1, 0));
-  vec3 v01 = grid_vertex(face, c + ivec2(0, 1)), v11 = grid_vertex(face, c + ivec2(1));
   float o = orientation(face);
-  write_oriented(2u * local, o, v00, v10, v11);
-  write_oriented(2u * local + 1u, o, v00, v11, v01);
+#if DEPTH_MODE == DEPTH_SHELL
+  cell_triangles(4u * local, -o, face, c);  // the inner surface faces the light: out of the shell
+  cell_triangles(4u * local + 2u, o, face + FACES, c);
+#else
+  cell_triangles(2u * local, o, face, c);
+#endif
 }
 #endif
 
 #if PASS == PASS_EXTRA_TRIANGLES
+#if DEPTH_MODE == DEPTH_SHELL
+// A shell's side (spot: on the frustum's, directional: on the map column's):
+// per border segment s the quad between the inner and the outer surface's
+// border, two triangles whose edges run against the outer grid's (wound as the
+// texel mesh's grid) and the inner grid's (wound the other way).
+void extra_triangles(uint item, uint local) {
+  int s = int(item);
+  float o = orientation(0);
+  vec3 i0 = grid_vertex(0, border(s)), i1 = grid_vertex(0, border(s + 1));
+  vec3 u0 = grid_vertex(1, border(s)), u1 = grid_vertex(1, border(s + 1));
+  write_oriented(2u * local, o, u1, u0, i0);
+  write_oriented(2u * local + 1u, o, u1, i0, i1);
+}
+#else
 // The grid runs along its border from border(s) to border(s + 1) when o > 0:
 // what closes it runs back.
 void extra_triangles(uint item, uint local) {
@@ -417,14 +482,16 @@ void extra_triangles(uint item, uint local) {
 #endif
 }
 #endif
+#endif
 
 #if PASS == PASS_EYE
-// Whether x is on the lit side of cell c's triangle that its NDC position
-// (f: the position within the cell, [0, 1]²) falls in: the same split of the
-// cell as grid_triangles, the plane of that triangle's corners.
-bool below_cell(int face, ivec2 c, vec2 f, vec3 x) {
-  vec3 v00 = grid_vertex(face, c), v10 = grid_vertex(face, c + ivec2(1, 0));
-  vec3 v01 = grid_vertex(face, c + ivec2(0, 1)), v11 = grid_vertex(face, c + ivec2(1));
+// Whether x is on the lit side of the triangle of cell c (of face `face`, on
+// vertex layer `layer`) that its NDC position (f: the position within the
+// cell, [0, 1]²) falls in: the same split of the cell as grid_triangles, the
+// plane of that triangle's corners.
+bool below_cell(int face, int layer, ivec2 c, vec2 f, vec3 x) {
+  vec3 v00 = grid_vertex(layer, c), v10 = grid_vertex(layer, c + ivec2(1, 0));
+  vec3 v01 = grid_vertex(layer, c + ivec2(0, 1)), v11 = grid_vertex(layer, c + ivec2(1));
   vec3 a = v00, b = f.y <= f.x ? v10 : v11, d = f.y <= f.x ? v11 : v01;  // (v00, v10, v11) or (v00, v11, v01)
   return orientation(face) * dot(cross(b - a, d - a), x - a) < 0.0;
 }
@@ -437,11 +504,14 @@ ivec2 ndc_cell(vec2 ndc, out vec2 f) {
   return c;
 }
 
-void eye() {
-  vec3 x = frame.eye;
-  bool inside;
+// Whether x lies within the map's domain (a cube's: everywhere) on the
+// light's side of grid surface `surface` (0: the only or the inner one, 1: a
+// shell's outer).
+bool below_surface(int surface, vec3 x) {
+  vec2 f;
 #if VOLUME_KIND == KIND_CUBE
   vec3 v = x - LIGHT.position, a = abs(v);
+  if (v == vec3(0.0)) return true;  // at the light: every distance is > 0
   int face;
   vec2 st;
   if (a.x >= a.y && a.x >= a.z) {  // GL's face selection (the major axis)
@@ -454,20 +524,28 @@ void eye() {
     face = v.z >= 0.0 ? 4 : 5;
     st = vec2(v.z >= 0.0 ? v.x : -v.x, -v.y) / a.z;
   }
-  vec2 f;
-  ivec2 c = ndc_cell(st, f);
-  inside = v == vec3(0.0) || below_cell(face, c, f, x);  // at the light: inside (every distance is > 0)
-#elif VOLUME_KIND == KIND_SPOT
-  vec4 clip = LIGHT.shadow_matrix * vec4(x, 1.0);
-  vec2 ndc = clip.xy / clip.w, f;
-  inside = clip.w > 0.0 && all(lessThanEqual(abs(ndc), vec2(1.0)));
-  if (inside) inside = below_cell(0, ndc_cell(ndc, f), f, x);
+  return below_cell(face, face + surface * FACES, ndc_cell(st, f), f, x);
 #else
   vec4 clip = LIGHT.shadow_matrix * vec4(x, 1.0);
-  vec2 ndc = clip.xy / clip.w, f;
+  vec2 ndc = clip.xy / clip.w;
+  bool domain = clip.w > 0.0 && all(lessThanEqual(abs(ndc), vec2(1.0)));
+  return domain && below_cell(0, surface, ndc_cell(ndc, f), f, x);
+#endif
+}
+
+void eye() {
+  vec3 x = frame.eye;
+#if DEPTH_MODE == DEPTH_SHELL
+  bool inside = !below_surface(0, x) && below_surface(1, x);
+#elif VOLUME_KIND == KIND_DIRECTIONAL
+  // Inside the skirt's box, and under the grid where the map covers x.
+  vec4 clip = LIGHT.shadow_matrix * vec4(x, 1.0);
+  vec2 ndc = clip.xy / clip.w;
   float depth = dot(x, LIGHT.direction);
-  inside = depth > cap_depth && depth < far_ring_depth && all(lessThan(abs(ndc), vec2(skirt_extent())));
-  if (inside && all(lessThanEqual(abs(ndc), vec2(1.0)))) inside = below_cell(0, ndc_cell(ndc, f), f, x);
+  bool inside = depth > cap_depth && depth < far_ring_depth && all(lessThan(abs(ndc), vec2(skirt_extent())));
+  if (inside && all(lessThanEqual(abs(ndc), vec2(1.0)))) inside = below_surface(0, x);
+#else
+  bool inside = below_surface(0, x);
 #endif
   eye_counts[light_index] = inside ? 0 : 1;
 }
@@ -480,7 +558,9 @@ void seams(uint item) {
   ivec2 v = border(int(item) % ring);
   ivec3 p = lattice(face, v);
   int f = owner(p);
-  if (f != face) imageStore(vertices, ivec3(v, face), imageLoad(vertices, ivec3(face_coords(f, p), f)));
+  if (f == face) return;
+  for (int s = 0; s < SURFACES; ++s)
+    imageStore(vertices, ivec3(v, face + s * FACES), imageLoad(vertices, ivec3(face_coords(f, p), f + s * FACES)));
 }
 #endif
 

@@ -54,11 +54,12 @@ int bound_texture_size(GLuint unit, GLenum binding_query) {
   return width;
 }
 
-GLsizei triangles_of(LightVolumeMesh::Kind kind, int r) {
+GLsizei triangles_of(LightVolumeMesh::Kind kind, int r, LightVolumeMesh::Depth depth) {
+  const bool shell = depth == LightVolumeMesh::Depth::shell;
   switch (kind) {
-    case LightVolumeMesh::Kind::spot: return 2 * r * r + 4 * r;
-    case LightVolumeMesh::Kind::cube: return 12 * r * r;
-    case LightVolumeMesh::Kind::directional: return 2 * r * r + 12 * r + 14;
+    case LightVolumeMesh::Kind::spot: return shell ? 4 * r * r + 8 * r : 2 * r * r + 4 * r;
+    case LightVolumeMesh::Kind::cube: return shell ? 24 * r * r : 12 * r * r;
+    case LightVolumeMesh::Kind::directional: return shell ? 4 * r * r + 8 * r : 2 * r * r + 12 * r + 14;
     case LightVolumeMesh::Kind::none: break;
   }
   return 0;
@@ -82,9 +83,9 @@ bool software_renderer() {
 
 }  // namespace
 
-std::vector<SettingSpec> light_volume_settings() {
+std::vector<SettingSpec> light_volume_settings(int default_resolution) {
   using T = SettingSpec::Type;
-  return {{"volume_resolution", T::integer, 256, 32, 4096, {},
+  return {{"volume_resolution", T::integer, static_cast<double>(default_resolution), 32, 4096, {},
            "cells per side of the grid each shadow map (or cube face) is turned into for the light volume mesh "
            "(Kingston §4.3.1, McCool 2000), clamped to the map's resolution: 2R² triangles per map, 12R² per cube"}};
 }
@@ -159,12 +160,13 @@ void LightVolumeMesh::build(const SceneFrame& frame) {
   triangle_count_ = 0;
   for (LightRange& range : ranges_) {
     range.first = triangle_count_;
-    range.count = triangles_of(range.kind, grid_);
+    range.count = triangles_of(range.kind, grid_, depth_);
     triangle_count_ += range.count;
   }
-  allocate(grid_, cubes ? 6 : 1, triangle_count_, lights);
-  const GLint zero = 0;
-  glClearNamedBufferData(eye_counts_.id(), GL_R32I, GL_RED_INTEGER, GL_INT, &zero);  // lights without a map: inside
+  allocate(grid_, (cubes ? 6 : 1) * (depth_ == Depth::shell ? 2 : 1), triangle_count_, lights);
+  // Lights without a map: inside their (unbounded) lit volume, outside any shell.
+  const GLint no_map = depth_ == Depth::shell ? 1 : 0;
+  glClearNamedBufferData(eye_counts_.id(), GL_R32I, GL_RED_INTEGER, GL_INT, &no_map);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, extras_binding, extras_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, eye_binding, eye_counts_.id());
   glBindImageTexture(vertices_unit, vertices_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
@@ -208,11 +210,11 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
   const std::string common = binding_defines() + "#define BINDING_VOLUME_EXTRAS " + std::to_string(extras_binding) +
                              "\n#define BINDING_VOLUME_RECORDS " + std::to_string(records_binding) +
                              "\n#define BINDING_VOLUME_EYE " + std::to_string(eye_binding) + "\n#define VOLUME_KIND " +
-                             kinds[static_cast<int>(kind)] + "\n";
+                             kinds[static_cast<int>(kind)] + "\n#define DEPTH_MODE " +
+                             std::to_string(static_cast<int>(depth_)) + "\n";
   auto use = [&](Pass pass) -> const gpu::Program& {
-    // Only the vertex pass depends on the depth mode, only the cell pass on the split.
+    // Only the cell pass depends on the split.
     std::string defines = common + "#define PASS " + std::to_string(pass) + "\n";
-    if (pass == grid_vertices_pass) defines += "#define DEPTH_MODE " + std::to_string(static_cast<int>(depth_)) + "\n";
     if (pass == cells_pass && split) defines += "#define CELL_SPLIT\n";
     const gpu::Program& p = gpu::cached_compute_program("methods/kit/light_volume_mesh.comp.glsl", defines);
     glUseProgram(p.id());
@@ -255,11 +257,15 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
   dispatch_items(use(grid_vertices_pass), 0, static_cast<GLuint>(faces * (r + 1) * (r + 1)));
   if (kind == Kind::cube) dispatch_items(use(seams_pass), 0, static_cast<GLuint>(6 * 4 * r));
   const GLsizei first = ranges_[static_cast<size_t>(light)].first;
-  write_records(use(grid_triangles_pass), first, cells, 2);
-  if (kind != Kind::cube) {
+  const GLuint surfaces = depth_ == Depth::shell ? 2 : 1;
+  write_records(use(grid_triangles_pass), first, cells, 2 * surfaces);
+  const GLsizei extras_first = first + 2 * static_cast<GLsizei>(surfaces * cells);
+  if (kind != Kind::cube && depth_ == Depth::shell) {  // the strips between the borders
+    write_records(use(extra_triangles_pass), extras_first, static_cast<GLuint>(4 * r), 2);
+  } else if (kind != Kind::cube) {
     const bool spot = kind == Kind::spot;
     dispatch_items(use(extra_vertices_pass), 0, spot ? 1u : static_cast<GLuint>(4 * r + 8));
-    write_records(use(extra_triangles_pass), first + 2 * static_cast<GLsizei>(cells),
+    write_records(use(extra_triangles_pass), extras_first,
                   spot ? static_cast<GLuint>(4 * r) : static_cast<GLuint>(12 * r + 14), 1);
   }
   dispatch_items(use(eye_pass), 0, 1);

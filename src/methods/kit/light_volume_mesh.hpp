@@ -34,28 +34,38 @@
 // light: 2·far + 1 past the eye's depth), beyond every visible point, so the
 // mesh stays finite and closed.
 //
-// A vertex's depth from the texels around it (Depth): texel = the texel that
-// holds the vertex's direction (vertex i of R takes texel ⌊i·S/R⌋, the last
-// clamped to S − 1; the lit_volume method uses R = S); nearest and farthest =
-// the minimum and maximum over every texel of the grid cells that share the
-// vertex: meshes inside and outside every texel's surface, the [front, back]
-// interval a ray marcher needs.
+// Two meshes (Depth):
+// - texel: the lit volume above, each vertex at the depth of the texel that
+//   holds its direction (vertex i of R takes texel ⌊i·S/R⌋, the last clamped
+//   to S − 1; the light_volume method uses R = S).
+// - shell (McCool's conservative volume, for sv_march): the closed surface of
+//   the shell between an inner grid, each vertex at the minimum over every
+//   texel of the cells that share it, and an outer grid at their maximum moved
+//   on past the shadow test's bias and the chords across a cell (beyond_lit in
+//   the shader), joined along the border by strips (a spot's frustum side, a
+//   directional map's column side; a cube has no border). Inside the inner
+//   grid every texel says lit, beyond the outer every texel says shadowed: every
+//   point where the shadow map's visibility can change lies in the shell, and a
+//   ray outside it has one visibility on each stretch of its own (within a
+//   spot's frustum or a directional map's column). Its triangles are oriented
+//   out of the shell; its eye count is 0 when the eye is inside the shell.
 //
 // Triangles are CountedTriangle records (lit_intervals.glsl's layout, written
 // in the shader as five uvec4 words each) with weight +1 and the light's index,
-// their unit normal (float, from the corners) pointing OUT of the lit volume
+// their unit normal (float, from the corners) pointing OUT of the volume
 // and plane.w = n·a at the first corner, as crossings.frag.glsl expects: a view
 // ray's count, started at eye_counts() (0 inside, 1 outside), is 0 exactly
 // where it is inside the volume. Lights without a shadow map (SHADOW_NONE:
-// nothing can occlude them) get no triangles and an eye count of 0: their lit
-// region is all of space (a spot's cone is the light map's business).
+// nothing can occlude them) get no triangles and an eye count of 0 (texel:
+// their lit region is all of space; a spot's cone is the light map's
+// business), or 1 (shell: there is none).
 //
 // GPU limits: an SSBO binding holds at most GL_MAX_SHADER_STORAGE_BLOCK_SIZE
 // bytes (128 MiB on llvmpipe, 1.68 M records); the build writes through bound
 // ranges no larger than that (max_records_per_binding()), and a pass that
 // reads triangles() must do the same when triangle_count() exceeds it. An R²
 // spot grid is 2R² + 4R triangles (R = 1024: 168 MB), a cube 12R², a
-// directional light 2R² + 12R + 14.
+// directional light 2R² + 12R + 14; a shell 4R² + 8R, 24R² and 4R² + 8R.
 #include "gpu/gl.hpp"
 #include "methods/kit/lit_interval_pass.hpp"
 #include "methods/kit/scene_frame.hpp"
@@ -66,13 +76,13 @@
 namespace airlight::kit {
 
 // Settings the methods built on the mesh share: "volume_resolution" (integer,
-// cells per side of each map's grid, 32 to 4096, default 256, clamped to the
-// map's resolution).
-std::vector<SettingSpec> light_volume_settings();
+// cells per side of each map's grid, 32 to 4096, clamped to the map's
+// resolution), with the method's default.
+std::vector<SettingSpec> light_volume_settings(int default_resolution);
 
 class LightVolumeMesh {
 public:
-  enum class Depth { texel, nearest, farthest };  // a vertex's distance (above)
+  enum class Depth { texel, shell };  // which mesh (above)
   enum class Kind { none, spot, cube, directional };  // the mesh a light gets, from its shadow map
 
   LightVolumeMesh(int resolution, Depth depth);
@@ -91,6 +101,7 @@ public:
   // Per light: 0 if the frame's eye is inside its lit volume, 1 if not (read
   // from the GPU, where the eye's cell of the mesh decides it).
   std::vector<int> eye_counts() const;
+  const gpu::Buffer& eye_count_buffer() const { return eye_counts_; }  // the same on the GPU: one int per light
   std::vector<CountedTriangle> read_back() const;  // for tests and reports
   double seconds() const;  // the last build's GPU time (glFinish-bracketed on llvmpipe, else timestamps)
 

@@ -302,12 +302,13 @@ TEST_P(LightVolume, ClosedAndOutwardAtEveryResolutionAndDepth) {
   Rig rig(c.kind, c.size, 7);
   rig.render(rig.eye());
   for (const int r : {32, 64, c.size})
-    for (const Depth depth : {Depth::texel, Depth::nearest, Depth::farthest}) {
+    for (const Depth depth : {Depth::texel, Depth::shell}) {
       auto mesh = built(rig, r, depth);
       const std::vector<CountedTriangle> records = mesh->read_back();
-      const GLsizei expected = c.kind == Kind::spot ? 2 * r * r + 4 * r
-                               : c.kind == Kind::point ? 12 * r * r
-                                                       : 2 * r * r + 12 * r + 14;
+      const bool shell = depth == Depth::shell;
+      const GLsizei expected = c.kind == Kind::spot    ? (shell ? 4 * r * r + 8 * r : 2 * r * r + 4 * r)
+                               : c.kind == Kind::point ? (shell ? 24 * r * r : 12 * r * r)
+                                                       : (shell ? 4 * r * r + 8 * r : 2 * r * r + 12 * r + 14);
       ASSERT_EQ(mesh->triangle_count(), expected);
       ASSERT_EQ(records.size(), static_cast<size_t>(expected));
       const Closure closed = closure(records);
@@ -492,31 +493,40 @@ TEST_P(LightVolume, EyeCountsAreZeroInsideOneOutsideAndTheMeshsParity) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int n = 0; n < 24; ++n) known.push_back({l + glm::dvec3(8 * u(rng), 10 * u(rng) - 4, 8 * u(rng)), -1});
-  int agree = 0, ambiguous = 0;
-  for (const auto& [eye, expected] : known) {
-    rig.render(glm::vec3(eye));
-    auto mesh = built(rig, 32, Depth::texel);
-    const std::vector<int> counts = mesh->eye_counts();
-    ASSERT_EQ(counts.size(), 1u);
-    const int by_parity = parity(triangles(mesh->read_back()), glm::dvec3(glm::vec3(eye)), rng);
-    if (expected >= 0) {
-      EXPECT_EQ(counts[0], expected) << "eye " << eye.x << " " << eye.y << " " << eye.z;
+  // The shell's count (0: inside the shell) is checked by parity alone (its
+  // vertices gather cells wider than the known eyes' 3×3 texels).
+  for (const Depth depth : {Depth::texel, Depth::shell}) {
+    int agree = 0, ambiguous = 0, in_shell = 0;
+    for (const auto& [eye, expected] : known) {
+      rig.render(glm::vec3(eye));
+      auto mesh = built(rig, 32, depth);
+      const std::vector<int> counts = mesh->eye_counts();
+      ASSERT_EQ(counts.size(), 1u);
+      const int by_parity = parity(triangles(mesh->read_back()), glm::dvec3(glm::vec3(eye)), rng);
+      if (expected >= 0 && depth == Depth::texel) {
+        EXPECT_EQ(counts[0], expected) << "eye " << eye.x << " " << eye.y << " " << eye.z;
+      }
+      if (by_parity < 0) {
+        ++ambiguous;
+        continue;
+      }
+      EXPECT_EQ(counts[0], by_parity ? 0 : 1) << "eye " << eye.x << " " << eye.y << " " << eye.z;
+      agree += counts[0] == (by_parity ? 0 : 1);
+      in_shell += depth == Depth::shell && by_parity;
     }
-    if (by_parity < 0) {
-      ++ambiguous;
-      continue;
-    }
-    EXPECT_EQ(counts[0], by_parity ? 0 : 1) << "eye " << eye.x << " " << eye.y << " " << eye.z;
-    agree += counts[0] == (by_parity ? 0 : 1);
+    std::printf("%s, %s mesh: eye counts agree with the read-back mesh's parity at %d of %zu eyes (%d on the "
+                "surface, %d inside the shell)\n",
+                name(c.kind), depth == Depth::shell ? "shell" : "texel", agree, known.size(), ambiguous, in_shell);
   }
-  std::printf("%s: eye counts agree with the read-back mesh's parity at %d of %zu eyes (%d on the surface)\n",
-              name(c.kind), agree, known.size(), ambiguous);
   context.check("light volume eye counts");
 }
 
-// ---- 4. nearest ≤ texel ≤ farthest ---------------------------------------------------------
+// ---- 4. the shell around the texel mesh -----------------------------------------------------
 
-TEST_P(LightVolume, NearestTexelFarthestAreOrderedAtEveryVertex) {
+// Records per cell: the texel mesh's two grid triangles at 2k, the shell's
+// inner two at 4k and outer two at 4k + 2, each with the cell's first grid
+// vertex as its first corner (write_oriented keeps it).
+TEST_P(LightVolume, ShellInnerTexelOuterAreOrderedAtEveryCell) {
   gpu::Context& context = gpu::Context::headless();
   const Case c = GetParam();
   Rig rig(c.kind, c.size, 17);
@@ -526,29 +536,29 @@ TEST_P(LightVolume, NearestTexelFarthestAreOrderedAtEveryVertex) {
     return c.kind == Kind::directional ? glm::dot(glm::dvec3(p), d) : glm::length(glm::dvec3(p) - l);
   };
   for (const int r : {32, 64, c.size}) {
-    std::vector<std::vector<CountedTriangle>> meshes;
-    for (const Depth mode : {Depth::nearest, Depth::texel, Depth::farthest})
-      meshes.push_back(built(rig, r, mode)->read_back());
-    size_t corners = 0, strict = 0, wrong = 0;
-    for (size_t k = 0; k < meshes[0].size(); ++k)
-      for (int v = 0; v < 3; ++v) {
-        const double a = depth(meshes[0][k].corners[v]), b = depth(meshes[1][k].corners[v]),
-                     e = depth(meshes[2][k].corners[v]);
-        ++corners;
-        strict += a < e;
-        wrong += !(a <= b && b <= e);
-      }
-    std::printf("%s S=%d R=%d: %zu corners, nearest <= texel <= farthest broken at %zu, nearest < farthest at %zu\n",
-                name(c.kind), c.size, r, corners, wrong, strict);
+    const std::vector<CountedTriangle> texel = built(rig, r, Depth::texel)->read_back();
+    const std::vector<CountedTriangle> shell = built(rig, r, Depth::shell)->read_back();
+    const size_t cells = static_cast<size_t>(r) * r * (c.kind == Kind::point ? 6 : 1);
+    size_t strict = 0, wrong = 0;
+    for (size_t k = 0; k < cells; ++k) {
+      const double inner = depth(shell[4 * k].corners[0]), middle = depth(texel[2 * k].corners[0]),
+                   outer = depth(shell[4 * k + 2].corners[0]);
+      strict += inner < outer;
+      wrong += !(inner <= middle && middle < outer);
+    }
+    std::printf("%s S=%d R=%d: %zu cells, inner <= texel < outer broken at %zu, inner < outer at %zu\n",
+                name(c.kind), c.size, r, cells, wrong, strict);
     EXPECT_EQ(wrong, 0u);
-    EXPECT_GT(strict, corners / 20);
+    EXPECT_GT(strict, cells / 20);
   }
-  context.check("light volume depths");
+  context.check("light volume shell");
 }
 
 // A vertex's depth as the header defines it, computed here from the imported
-// map: texel = texel ⌊i·S/R⌋; nearest and farthest = the extremes of the
-// texels of the cells around the vertex. R dividing S, not dividing it,
+// map: texel = texel ⌊i·S/R⌋; the shell's inner and outer = the extremes of
+// the texels of the cells around the vertex, the outer moved on by the bias
+// and the chord (at most 3%: one texel of bias is b·k/S = 1.1% of the distance
+// for this 70° map at S = 128, the chord across a 32² cell's diagonal 0.2%). R dividing S, not dividing it,
 // and cells of 65² texels, which the shader reduces in 64² sub-blocks
 // (CELL_SPLIT, atomics). Grid vertex (i, j) is the first corner of cell (i, j)'s
 // first triangle.
@@ -558,26 +568,40 @@ TEST(LightVolumeDepths, VertexDepthsAreTheirTexelOrTheExtremesOfTheirCells) {
     Rig rig(Kind::spot, size, 29);
     rig.render(rig.eye());
     const glm::dvec3 l(rig.light().position);
-    for (const Depth mode : {Depth::texel, Depth::nearest, Depth::farthest}) {
-      const std::vector<CountedTriangle> records = built(rig, r, mode)->read_back();
-      double worst = 0.0;
+    for (const bool shell : {false, true}) {
+      const std::vector<CountedTriangle> records = built(rig, r, shell ? Depth::shell : Depth::texel)->read_back();
+      double worst = 0.0, outer_low = INFINITY, outer_high = 0.0;
       for (int j = 0; j < r; ++j)
         for (int i = 0; i < r; ++i) {
-          double expected = mode == Depth::nearest ? INFINITY : -INFINITY;
-          if (mode == Depth::texel) expected = rig.texel(0, i * size / r, j * size / r);  // i < R: never clamped
-          for (int cj = std::max(j - 1, 0); cj <= j && mode != Depth::texel; ++cj)
+          double low = INFINITY, high = -INFINITY;
+          for (int cj = std::max(j - 1, 0); cj <= j; ++cj)
             for (int ci = std::max(i - 1, 0); ci <= i; ++ci)
               for (int y = cj * size / r; y < ((cj + 1) * size + r - 1) / r; ++y)
-                for (int x = ci * size / r; x < ((ci + 1) * size + r - 1) / r; ++x)
-                  expected = mode == Depth::nearest ? std::min(expected, rig.texel(0, x, y))
-                                                    : std::max(expected, rig.texel(0, x, y));
-          const glm::vec4 corner = records[2 * (static_cast<size_t>(j) * r + i)].corners[0];
-          worst = std::max(worst, std::abs(glm::length(glm::dvec3(corner) - l) - expected) / expected);
+                for (int x = ci * size / r; x < ((ci + 1) * size + r - 1) / r; ++x) {
+                  low = std::min(low, rig.texel(0, x, y));
+                  high = std::max(high, rig.texel(0, x, y));
+                }
+          const size_t cell = static_cast<size_t>(j) * r + i;
+          auto distance = [&](size_t record) { return glm::length(glm::dvec3(records[record].corners[0]) - l); };
+          const double expected = shell ? low : rig.texel(0, i * size / r, j * size / r);  // i < R: never clamped
+          const double found = distance(shell ? 4 * cell : 2 * cell);
+          worst = std::max(worst, std::abs(found - expected) / expected);
+          if (shell) {
+            const double outer = distance(4 * cell + 2) / high - 1.0;
+            outer_low = std::min(outer_low, outer);
+            outer_high = std::max(outer_high, outer);
+          }
         }
-      std::printf("spot S=%d R=%d depth=%d: vertex distances against their texel or their cells' extremes: worst "
-                  "relative error %.2g\n",
-                  size, r, static_cast<int>(mode), worst);
+      std::printf("spot S=%d R=%d %s: vertex distances against their texel or their cells' minimum: worst relative "
+                  "error %.2g",
+                  size, r, shell ? "shell" : "texel", worst);
+      if (shell) std::printf("; outer over the cells' maximum: %.4f to %.4f", outer_low, outer_high);
+      std::printf("\n");
       EXPECT_LT(worst, 1e-5);
+      if (shell) {
+        EXPECT_GT(outer_low, 0.0);
+        EXPECT_LT(outer_high, 0.03);
+      }
     }
   }
   context.check("light volume extremes");

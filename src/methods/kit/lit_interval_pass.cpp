@@ -33,25 +33,27 @@ glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dve
   return glm::vec4(glm::vec3(unit), static_cast<float>(glm::dot(unit, point)));
 }
 
+SettingSpec gamma_samples_setting() {
+  return {"samples", SettingSpec::Type::integer, 64, 1, 1024, {},
+          "points per lit interval where what Γ has no closed form for — a gobo's colours, the light's leg "
+          "through other bounded volumes — is sampled: Γ times the ratio of the exact in-scattering to Γ's "
+          "integrand there (even in the angle seen from a spot, uniform along a beam); unused without gobos and "
+          "volumes"};
+}
+
 std::vector<SettingSpec> lit_interval_settings() {
-  using T = SettingSpec::Type;
-  return {{"capacity", T::real, 4.0, 0.01, 256.0, {},
+  return {{"capacity", SettingSpec::Type::real, 4.0, 0.01, 256.0, {},
            "crossings per pixel (on average over the image) the node pool holds at first; a frame with more grows "
            "the pool and draws again, so no crossing is ever dropped (the report's `redraws`)"},
-          {"samples", T::integer, 64, 1, 1024, {},
-           "points per lit interval where what Γ has no closed form for — a gobo's colours, the light's leg "
-           "through other bounded volumes — is sampled: Γ times the ratio of the exact in-scattering to Γ's "
-           "integrand there (even in the angle seen from a spot, uniform along a beam); unused without gobos and "
-           "volumes"}};
+          gamma_samples_setting()};
 }
 
 LitIntervalPass::LitIntervalPass(const Settings& s)
     : capacity_per_pixel_(s.real("capacity")), samples_(s.integer("samples")) {}
 
-void LitIntervalPass::prepare() {
+void CountedDraw::prepare() {
   fbo_ = gpu::make_framebuffer();
   no_vertices_ = gpu::make_vertex_array();  // the triangles come from their buffer by gl_VertexID
-  node_count_ = gpu::make_buffer(2 * sizeof(GLuint), nullptr);
   // A storage binding holds at most GL_MAX_SHADER_STORAGE_BLOCK_SIZE bytes
   // (128 MiB on llvmpipe: 1.68 M triangles); larger sets are drawn in ranges
   // whose offsets keep the binding's alignment.
@@ -66,6 +68,47 @@ void LitIntervalPass::prepare() {
     glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
     invocations_ = gpu::Query(id);
   }
+}
+
+double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, const gpu::Buffer& triangles,
+                         size_t count) {
+  if (count == 0) return 0.0;
+  if (frame.width() != width_ || frame.height() != height_) {
+    width_ = frame.width();
+    height_ = frame.height();
+    glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width_);
+    glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height_);
+  }
+  glUseProgram(program.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_CLAMP);
+  glBindVertexArray(no_vertices_.id());
+  if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
+  for (size_t first = 0; first < count; first += range_triangles_) {
+    const size_t n = std::min(range_triangles_, count - first);
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles.id(),
+                      static_cast<GLintptr>(first * sizeof(CountedTriangle)),
+                      static_cast<GLsizeiptr>(n * sizeof(CountedTriangle)));
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * n));
+  }
+  GLuint64 fragments = 0;
+  if (invocations_) {
+    glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+    glGetQueryObjectui64v(invocations_.id(), GL_QUERY_RESULT, &fragments);
+  }
+  glDisable(GL_DEPTH_CLAMP);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  return static_cast<double>(fragments);
+}
+
+void LitIntervalPass::prepare() {
+  counted_draw_.prepare();
+  node_count_ = gpu::make_buffer(2 * sizeof(GLuint), nullptr);
 }
 
 std::string lit_interval_defines() {
@@ -115,8 +158,6 @@ void LitIntervalPass::list_crossings(const SceneFrame& frame, const gpu::Buffer&
     width_ = frame.width();
     height_ = frame.height();
     heads_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
-    glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width_);
-    glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height_);
   }
   if (nodes_.id() == 0)
     allocate_pool(std::max<size_t>(static_cast<size_t>(double(width_) * height_ * capacity_per_pixel_), 1));
@@ -129,49 +170,21 @@ void LitIntervalPass::list_crossings(const SceneFrame& frame, const gpu::Buffer&
   }
 }
 
-// The triangles rasterized over an attachment-less framebuffer: no depth test
-// (each fragment compares its t with the G-buffer distance), no culling (both
-// sides count), no near or far clipping (GL_DEPTH_CLAMP).
+// Every crossing into the pixels' lists, from heads cleared to empty.
 void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count) {
   const GLuint empty = end_of_list;
   glClearTexImage(heads_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
   const GLuint counters[2] = {0, static_cast<GLuint>(std::min<size_t>(node_capacity_, end_of_list))};
   glNamedBufferSubData(node_count_.id(), 0, sizeof(counters), counters);
   crossings_ = 0;
-  fragments_ = 0.0;
-  if (triangle_count == 0) return;
   const gpu::Program& program = gpu::cached_program(
       {{GL_VERTEX_SHADER, "methods/kit/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/crossings.frag.glsl"}},
       frame.defines() + defines());
-  glUseProgram(program.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
   glBindImageTexture(0, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glViewport(0, 0, width_, height_);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  glEnable(GL_DEPTH_CLAMP);
-  glBindVertexArray(no_vertices_.id());
-  if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
-  for (size_t first = 0; first < triangle_count; first += range_triangles_) {
-    const size_t count = std::min(range_triangles_, triangle_count - first);
-    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles.id(),
-                      static_cast<GLintptr>(first * sizeof(CountedTriangle)),
-                      static_cast<GLsizeiptr>(count * sizeof(CountedTriangle)));
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * count));
-  }
-  if (invocations_) {
-    glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-    GLuint64 count = 0;
-    glGetQueryObjectui64v(invocations_.id(), GL_QUERY_RESULT, &count);
-    fragments_ = static_cast<double>(count);
-  }
-  glDisable(GL_DEPTH_CLAMP);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(node_count_.id(), 0, sizeof(GLuint), &crossings_);
+  fragments_ = counted_draw_.draw(frame, program, triangles, triangle_count);
+  if (triangle_count > 0) glGetNamedBufferSubData(node_count_.id(), 0, sizeof(GLuint), &crossings_);
 }
 
 void LitIntervalPass::resolve(const SceneFrame& frame, const std::vector<int>& eye_counts, const gpu::Texture& target) {

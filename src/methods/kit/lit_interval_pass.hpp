@@ -31,12 +31,38 @@ struct CountedTriangle {
 // loses the normal's direction, and a crossing's sign with it.
 glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c);
 
+// samples: where Γ has no closed form, the points per lit interval that
+// correct it (lit_gamma.glsl's SAMPLES).
+SettingSpec gamma_samples_setting();
+
 // capacity and samples: the settings of the pass (in front of a method's own).
 std::vector<SettingSpec> lit_interval_settings();
 
 // "#define BINDING_COUNTED n" and the other bindings of lit_intervals.glsl: the
 // counted triangles at binding::first_free_storage, the node pool after them.
 std::string lit_interval_defines();
+
+// Counted triangles on the GPU rasterized with crossings.vert.glsl and a
+// fragment stage of the caller's, over an attachment-less framebuffer of the
+// frame's size: no depth test (a fragment compares its t with the G-buffer
+// distance), no culling (both sides count), no near or far clipping
+// (GL_DEPTH_CLAMP); in ranges no larger than one storage binding holds.
+class CountedDraw {
+public:
+  void prepare();  // needs a current context
+
+  // Draws records [0, count) of `triangles` with `program` (its vertex stage
+  // crossings.vert.glsl, the records at BINDING_COUNTED); returns the fragment
+  // shader invocations (0 without pipeline statistics).
+  double draw(const SceneFrame& frame, const gpu::Program& program, const gpu::Buffer& triangles, size_t count);
+
+private:
+  size_t range_triangles_ = 1;  // triangles per storage binding
+  gpu::Framebuffer fbo_;
+  gpu::VertexArray no_vertices_;
+  int width_ = 0, height_ = 0;
+  gpu::Query invocations_;  // fragment shader invocations (GL_ARB_pipeline_statistics_query), when there
+};
 
 class LitIntervalPass {
 public:
@@ -69,12 +95,9 @@ private:
   int samples_;
   gpu::Buffer triangles_, nodes_, node_count_;
   size_t triangle_capacity_ = 0, node_capacity_ = 0;
-  size_t range_triangles_ = 1;  // triangles per storage binding
   gpu::Texture heads_;
-  gpu::Framebuffer fbo_;
-  gpu::VertexArray no_vertices_;
+  CountedDraw counted_draw_;
   int width_ = 0, height_ = 0;
-  gpu::Query invocations_;  // fragment shader invocations (GL_ARB_pipeline_statistics_query), when there
   unsigned crossings_ = 0;
   double fragments_ = 0.0;
   int redraws_ = 0;

@@ -25,6 +25,7 @@
 #define SPREAD
 #endif
 #include "methods/kit/march.glsl"
+#include "methods/kit/march_pass.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D airlight_out;  // accumulated over the dispatches
@@ -34,21 +35,7 @@ layout(rgba32f, binding = 1) uniform writeonly image2D guide_out;  // the light 
 #ifdef GUARD
 layout(rgba32f, binding = 2) uniform image2D spread_out;  // accumulated over the dispatches
 #endif
-layout(binding = BINDING_JITTER) uniform sampler2D jitter_offsets;  // R32F tile of values in [0, 1)
-
-uniform int steps;         // N, of the whole march
-uniform int block;         // M
-uniform int first_sample;  // this dispatch: the pixel's own samples j = first_sample ..
-uniform int sample_count;  // first_sample + sample_count − 1, i.e. k = q + j·M²
-
-// Where in each step this pixel samples, in [0, 1).
-float step_offset(ivec2 pixel) {
-#ifdef JITTER
-  return texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r;
-#else
-  return 0.5;
-#endif
-}
+uniform int block;  // M: the pixel's own samples j are the indices k = q + j·M²
 
 SampleRange pixel_samples(ivec2 pixel, bool all_samples) {
   int stride = block * block;

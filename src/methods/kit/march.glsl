@@ -106,15 +106,22 @@ vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) 
   return sum;
 }
 
-// Equiangular: light i's own march over the part of [0, d] it lights, even in
-// the angle seen from a point or spot light, uniform over a beam's box.
-vec3 march_light(int i, vec3 dir, float d, SampleRange r, float offset) {
-  if (unbounded_sun(i)) return vec3(0.0);
+// Light i's own march over the part of [t0, t1] it lights: with equiangular
+// sampling even in the angle seen from a point or spot light, else (and along
+// a beam's box or a directional light) in even steps.
+vec3 march_between(int i, vec3 dir, float t0, float t1, SampleRange r, float offset) {
   vec3 eye = frame.eye;
-  vec2 lit = lit_interval(i, eye, dir, 0.0, d);
+  vec2 lit = lit_interval(i, eye, dir, t0, t1);
   if (!(lit.y > lit.x)) return vec3(0.0);
-  Segment s = has_beam(i) ? uniform_segment(lit.x, lit.y) : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
+  bool even = SAMPLING == SAMPLING_UNIFORM || has_beam(i) || light_types[i] == LIGHT_DIRECTIONAL;
+  Segment s = even ? uniform_segment(lit.x, lit.y) : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
   return march_segment(dir, s, r, offset, i);
+}
+
+// Equiangular: light i's own march over the part of [0, d] it lights (the
+// unbounded suns march together).
+vec3 march_light(int i, vec3 dir, float d, SampleRange r, float offset) {
+  return unbounded_sun(i) ? vec3(0.0) : march_between(i, dir, 0.0, d, r, offset);
 }
 
 // L_air along the unit view ray `dir` up to distance d, over the range's samples.

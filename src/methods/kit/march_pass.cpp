@@ -53,7 +53,7 @@ void MarchPass::prepare() {
 
 // The march's settings as constants of its program (march.comp.glsl).
 std::string MarchPass::defines() const {
-  std::string d = "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n";
+  std::string d = extra_defines_ + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n";
   d += "#define SAMPLING " + std::to_string(static_cast<int>(settings_.sampling)) + "\n";
   if (settings_.jitter != Jitter::none) d += "#define JITTER\n";
   if (settings_.normalized) d += "#define NORMALIZED\n";
@@ -64,7 +64,7 @@ std::string MarchPass::defines() const {
 void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   const int stride = settings_.block * settings_.block;
   const int own_samples = (settings_.steps + stride - 1) / stride;  // of pixel q = 0, the most
-  const gpu::Program& program = gpu::cached_compute_program("methods/kit/march.comp.glsl", frame.defines() + defines());
+  const gpu::Program& program = gpu::cached_compute_program(program_, frame.defines() + defines());
   glUseProgram(program.id());
   gpu::set_uniform(program, "steps", settings_.steps);
   gpu::set_uniform(program, "block", settings_.block);

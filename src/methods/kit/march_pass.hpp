@@ -28,9 +28,14 @@ struct MarchSettings {
   static MarchSettings from(const Settings& settings, int block = 1, bool normalized = false, bool guard = false);
 };
 
+// The program, by default march.comp.glsl, may be a method's own march
+// (sv_march): it includes march_pass.glsl, writes image unit 0 and gets the
+// pass's defines after the frame's and `defines`.
 class MarchPass {
 public:
-  explicit MarchPass(MarchSettings settings) : settings_(std::move(settings)) {}
+  explicit MarchPass(MarchSettings settings, std::string program = "methods/kit/march.comp.glsl",
+                     std::string defines = "")
+      : settings_(std::move(settings)), program_(std::move(program)), extra_defines_(std::move(defines)) {}
 
   // Uploads the noise tile; needs a current context. The program is compiled
   // at the first run (gpu::cached_compute_program).
@@ -38,7 +43,8 @@ public:
 
   // Writes each pixel's sum over its own samples into `target` (RGBA32F of the
   // frame's size; w = 1, or when normalized whether a light reaches the ray);
-  // the frame must be bound (SceneFrame::bind).
+  // the frame must be bound (SceneFrame::bind), and what a method's own
+  // program reads besides.
   void run(const kit::SceneFrame& frame, const gpu::Texture& target);
 
   // With `normalized`: each pixel's light guide from the last run (RGBA32F, rgb).
@@ -55,6 +61,7 @@ private:
   std::string defines() const;
 
   MarchSettings settings_;
+  std::string program_, extra_defines_;
   gpu::Texture noise_;
   gpu::Texture guide_;
   gpu::Texture spread_;

@@ -47,7 +47,7 @@ private:
 };
 
 MethodInfo light_volume_method() {
-  std::vector<SettingSpec> own = kit::light_volume_settings();
+  std::vector<SettingSpec> own = kit::light_volume_settings(256);
   for (SettingSpec& s : kit::lit_interval_settings()) own.push_back(std::move(s));
   return {"light_volume", "Billeter et al. 2010, after Kingston 2018 §4.3",
           "exact volumetric shadows up to the shadow map's resolution: each light's map made a closed mesh of its "

@@ -1,0 +1,136 @@
+// Γ over one lit interval [a, b] of light i along a view ray (Biri 2006
+// §4.2, Nilsson 2008 §3.2, Kingston's exact parts outside [front, back]): the
+// closed-form airlight (closed_form.glsl, the twin of optics::gamma), cut into
+// pieces inside fixed sets of media where bounded volumes lie across the ray
+// (Biri §5.2), and corrected where Γ has no closed form. Shared by the
+// lit-interval pass (lit_intervals.comp.glsl) and sv_march.
+//
+// Gobos and bounded volumes: Γ is closed only in one medium per leg and
+// without a light map's colours; the ray is cut into pieces inside fixed sets
+// of media (unoccluded_airlight), and each lit interval's Γ is multiplied by a
+// ratio estimated at SAMPLES (a setting) points of the interval
+// (interval_correction), docs/decisions.md. A shader calls cut_into_pieces
+// once per pixel before lit_gamma.
+#include "methods/kit/closed_form.glsl"
+#include "methods/kit/equiangular.glsl"
+
+// light_map without the gobo: the spot's cone factor, or 1 inside a beam.
+float light_shape(int i, vec3 x) {
+  if (light_types[i] != LIGHT_SPOT) return has_beam(i) && !inside_beam(light_beam(i), x) ? 0.0 : 1.0;
+  vec3 delta = x - LIGHT(i).position;
+  float r = length(delta);
+  return spot_cone(LIGHT(i).direction, LIGHT(i).cone, light_edges[i] ? LIGHT(i).edge : 0.0,
+                   r > 0.0 ? delta / r : LIGHT(i).direction);
+}
+
+// σt of everything that fills x: the medium and the volumes that hold it.
+vec3 sigma_t_at(vec3 x) {
+  vec3 sigma_t = frame.medium_sigma_t;
+#define ADD_VOLUME_SIGMA_T(v) \
+  if (box_contains(x, VOLUME(v).lo, VOLUME(v).hi)) sigma_t += VOLUME(v).sigma_t;
+  FOR_EACH_VOLUME(ADD_VOLUME_SIGMA_T)
+#undef ADD_VOLUME_SIGMA_T
+  return sigma_t;
+}
+
+// The optical depth of x's leg to light i as Γ takes it (unoccluded_airlight):
+// σt at x all the way to a point or spot light, or back to a beam's aperture;
+// none for an unbounded sun (closed_form.glsl).
+vec3 gamma_light_depth(int i, vec3 x) {
+  if (simplified_model()) return vec3(0.0);
+  if (light_types[i] != LIGHT_DIRECTIONAL) return sigma_t_at(x) * length(LIGHT(i).position - x);
+  return has_beam(i) ? sigma_t_at(x) * max(beam_depth(light_beam(i), x), 0.0) : vec3(0.0);
+}
+
+// What Γ leaves out over light i's lit interval [a, b], as a factor: a gobo's
+// colours (no closed form) and, with bounded volumes, the light's leg through
+// media other than those at the point (Γ is closed only for one medium per
+// leg). At SAMPLES points where the light reaches (lit_interval: the spot's
+// cone, the beam's box), even in the angle seen from a point or spot (uniform
+// along a beam), the ratio Σ f·map / Σ f·shape·e^{τ − τ_Γ} of the exact
+// in-scattering without the light map f (scene.glsl, every medium on both
+// legs) times the light map (cone × gobo), over what Γ integrates (the cone
+// alone, the light's leg τ_Γ by gamma_light_depth instead of τ): exact when
+// that ratio is constant over the interval, and it keeps the gobo's
+// correlation with the cone's edge, the phase and extinction
+// (docs/decisions.md). 1 without a gobo or a volume: Γ is then exact.
+vec3 interval_correction(int i, vec3 eye, vec3 dir, float a, float b) {
+  if (!light_gobos[i] && VOLUME_COUNT == 0) return vec3(1.0);
+  vec2 lit = lit_interval(i, eye, dir, a, b);
+  if (!(lit.y > lit.x)) return vec3(1.0);  // Γ is 0 there
+  Segment s = light_types[i] == LIGHT_DIRECTIONAL ? uniform_segment(lit.x, lit.y)
+                                                  : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
+  vec3 exact = vec3(0.0), modelled = vec3(0.0);
+  for (int k = 0; k < SAMPLES; ++k) {
+    vec2 t = segment_sample(s, (float(k) + 0.5) / float(SAMPLES), SAMPLES);
+    vec3 x = eye + t.x * dir;
+    vec3 f = inscatter_unmapped(i, x, dir, eye_leg_depth(eye, x)) * t.y;
+    exact += f * light_map(i, x);
+    modelled += f * light_shape(i, x) * exp(light_leg_depth(i, x) - gamma_light_depth(i, x));
+  }
+  return mix(vec3(1.0), exact / max(modelled, vec3(1e-30)), greaterThan(modelled, vec3(0.0)));
+}
+
+#if VOLUME_COUNT > 0
+// Bounded media (Biri §5.2): the pixel's ray [0, d] cut at the ends of its
+// chords through the volumes into pieces, each inside a fixed set of media:
+// breaks[0] = 0 < … < breaks[PIECES] = d (empty pieces where chords miss).
+const int PIECES = 2 * VOLUME_COUNT + 1;
+float breaks[PIECES + 1];
+
+void cut_into_pieces(vec3 dir, float d) {
+  breaks[0] = 0.0;
+  breaks[PIECES] = d;
+#define ADD_CHORD_ENDS(v)                                                          \
+  {                                                                                \
+    vec2 chord = box_overlap(frame.eye, dir, 0.0, d, VOLUME(v).lo, VOLUME(v).hi); \
+    bool hit = chord.x < chord.y;                                                  \
+    breaks[2 * v + 1] = hit ? chord.x : d;                                         \
+    breaks[2 * v + 2] = hit ? chord.y : d;                                         \
+  }
+  FOR_EACH_VOLUME(ADD_CHORD_ENDS)
+#undef ADD_CHORD_ENDS
+  // The 2·VOLUME_COUNT chord ends sorted by a bubble sort of constant trip
+  // counts (min and max, no data-dependent loop), in registers.
+  for (int pass = 1; pass < PIECES - 1; ++pass)
+    for (int j = 1; j < PIECES - 1; ++j) {
+      float lo = min(breaks[j], breaks[j + 1]), hi = max(breaks[j], breaks[j + 1]);
+      breaks[j] = lo;
+      breaks[j + 1] = hi;
+    }
+}
+
+// Γ over [a, b] piece by piece: per piece, the eye leg's exact transmittance
+// to its start times Σ over its media (the one that fills space and each
+// volume it lies in) of Γ with that medium's σs and phase and the piece's σt
+// on both legs. Exact on the eye's leg and for the in-scattering; the light's
+// leg is taken through the piece's media all the way to the light, which
+// interval_correction corrects where it crosses other volumes.
+vec3 unoccluded_airlight(int i, vec3 eye, vec3 dir, float a, float b) {
+  vec3 sum = vec3(0.0);
+  for (int p = 0; p < PIECES; ++p) {
+    float start = breaks[p], t0 = max(a, start), t1 = min(b, breaks[p + 1]);
+    if (!(t1 > t0)) continue;  // data: the piece misses this lit interval
+    vec3 origin = eye + start * dir, middle = eye + 0.5 * (t0 + t1) * dir;
+    vec3 sigma_t = sigma_t_at(middle);
+    vec3 piece = component_airlight(i, MediumComponent(frame.medium_sigma_s, sigma_t, -1), origin, dir, t0 - start,
+                                    t1 - start);
+#define ADD_VOLUME_COMPONENT(v)                                                                              \
+    if (box_contains(middle, VOLUME(v).lo, VOLUME(v).hi))                                                    \
+      piece += component_airlight(i, MediumComponent(VOLUME(v).sigma_s, sigma_t, v), origin, dir, t0 - start, \
+                                  t1 - start);
+    FOR_EACH_VOLUME(ADD_VOLUME_COMPONENT)
+#undef ADD_VOLUME_COMPONENT
+    sum += exp(-eye_leg_depth(eye, origin)) * piece;
+  }
+  return sum;
+}
+#else
+void cut_into_pieces(vec3 dir, float d) {}
+vec3 unoccluded_airlight(int i, vec3 eye, vec3 dir, float a, float b) { return closed_form_airlight(i, eye, dir, a, b); }
+#endif
+
+vec3 lit_gamma(int i, vec3 eye, vec3 dir, float a, float b) {
+  if (!(b > a)) return vec3(0.0);
+  return unoccluded_airlight(i, eye, dir, a, b) * interval_correction(i, eye, dir, a, b);
+}
