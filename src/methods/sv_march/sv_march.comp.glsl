@@ -1,0 +1,76 @@
+// sv_march (Kingston 2018 §4.3.2 and §5.3, after McCool 2000): per pixel and
+// light, the ray is marched only over [front, back], its first and last
+// crossing with the light's shell mesh (kit/light_volume_mesh.hpp: every point
+// where the shadow map's visibility can change lies in the shell;
+// sv_bounds.frag.glsl). Outside it the visibility is one value on each
+// stretch, read at one point of it, and Γ integrates the stretch exactly
+// (lit_gamma.glsl; Kingston Fig. 10's cases: lit or unlit before the shell,
+// the same after it):
+//  - [0, front) and (back, d], where the light reaches along them (a spot's
+//    cone lies within its map's frustum; a directional map's column is cut
+//    out, lit beside it where the map holds no occluder);
+//  - the eye inside the shell: the march starts at the eye.
+// The march over [front, back] is raymarch's (march.glsl: its steps N,
+// sampling and jitter), per light, N samples over that light's stretch only.
+// The exact parts are added by the pass's first dispatch.
+#define SCENE_IN_REGISTERS
+#include "methods/kit/lit_gamma.glsl"
+#include "methods/kit/march.glsl"
+#include "methods/kit/march_pass.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform image2D airlight_out;  // accumulated over the dispatches
+layout(r32ui, binding = 1) readonly uniform uimage2DArray bounds;
+// Per light, 0 when the eye is inside its shell (LightVolumeMesh).
+layout(std430, binding = BINDING_SHELL_EYE) readonly buffer ShellEye { int shell_eye[]; };
+
+// Γ over [a, b] times light i's visibility there, where no shadow boundary
+// lies: one value over the part the light reaches, read at its middle.
+vec3 unbroken_stretch(int i, vec3 dir, float a, float b) {
+  vec3 eye = frame.eye;
+  vec2 lit = lit_interval(i, eye, dir, a, b);
+  if (!(lit.y > lit.x)) return vec3(0.0);
+  if (light_types[i] == LIGHT_DIRECTIONAL && light_shadows[i] == SHADOW_MAP) {
+    // Beside the map's column nothing occludes: its own stretch, and the rest lit.
+    vec4 o = LIGHT(i).shadow_matrix * vec4(eye, 1.0), v = LIGHT(i).shadow_matrix * vec4(dir, 0.0);
+    vec2 column = box_overlap(vec3(o.xy, 0.0), vec3(v.xy, 0.0), lit.x, lit.y, vec3(-1.0), vec3(1.0));
+    if (column.y > column.x && shadow_visibility(i, eye + 0.5 * (column.x + column.y) * dir) == 0.0)
+      return lit_gamma(i, eye, dir, lit.x, column.x) + lit_gamma(i, eye, dir, column.y, lit.y);
+    return lit_gamma(i, eye, dir, lit.x, lit.y);
+  }
+  return shadow_visibility(i, eye + 0.5 * (lit.x + lit.y) * dir) * lit_gamma(i, eye, dir, lit.x, lit.y);
+}
+
+// Light i's part of the pixel's ray [0, d]: its samples of this dispatch over
+// [front, back], and with `exact_parts` the stretches before and after.
+vec3 light_part(int i, ivec2 pixel, vec3 dir, float d, SampleRange r, float offset, bool exact_parts) {
+  float front = uintBitsToFloat(imageLoad(bounds, ivec3(pixel, 2 * i)).r);
+  float back = uintBitsToFloat(imageLoad(bounds, ivec3(pixel, 2 * i + 1)).r);
+  if (shell_eye[i] == 0) {
+    front = 0.0;
+    if (!(back > 0.0)) back = d;  // no crossing found (a closed shell always has one): all of it
+  }
+  front = min(front, d);
+  back = clamp(back, front, d);
+  vec3 sum = march_between(i, dir, front, back, r, offset);
+  if (exact_parts) sum += unbroken_stretch(i, dir, 0.0, front) + unbroken_stretch(i, dir, back, d);
+  return sum;
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, frame_size()))) return;
+  load_scene();
+  vec3 dir = pixel_ray(vec2(pixel) + 0.5);
+  float d = surface_distance(pixel);
+  SampleRange range = SampleRange(steps, first_sample, 1, min(steps, first_sample + sample_count));
+  bool exact_parts = first_sample == 0;
+  cut_into_pieces(dir, d);
+  float offset = step_offset(pixel);
+  vec3 sum = vec3(0.0);
+#define ADD_LIGHT(i) sum += light_part(i, pixel, dir, d, range, offset, exact_parts);
+  FOR_EACH_LIGHT(ADD_LIGHT)
+#undef ADD_LIGHT
+  if (!exact_parts) sum += imageLoad(airlight_out, pixel).rgb;
+  imageStore(airlight_out, pixel, vec4(sum, 1.0));
+}

@@ -1,0 +1,21 @@
+// sv_march's rows of the quality table (docs/design.md §6), each tolerance beside its reason.
+#include "methods/kit/quality.hpp"
+
+namespace airlight::kit::test {
+namespace {
+
+// clang-format off
+const Case rows[] = {
+  // At its defaults (N = 64 equiangular steps, the 1024² map on a 64² shell):
+  // the march's steps over the shells of the shadow edges, Γ elsewhere.
+  {"sv_march", "teapot_spot", {}, 0.002, "the teapot's shadow edges, 64 steps across its shell (measured 0.0011)"},
+  {"sv_march", "biri_sphere", {}, 0.02, "the sphere's shadow cone, whose shell reaches the floor, with the apex in view "
+                                        "(measured 0.0073)"},
+  {"sv_march", "three_lights", {}, 0.01, "three kinds of maps, a point light's cube among them (measured 0.0046)"},
+};
+// clang-format on
+
+INSTANTIATE_TEST_SUITE_P(Table, Quality, ::testing::ValuesIn(rows), case_name);
+
+}  // namespace
+}  // namespace airlight::kit::test
