@@ -9,25 +9,21 @@
 // large (docs/decisions.md).
 #define SCENE_IN_REGISTERS
 #include "methods/kit/closed_form.glsl"
-#include "methods/kit/lit_intervals.glsl"
+#include "methods/kit/crossing_fragment.glsl"
 
-flat in int triangle;
-flat in int exact;
 layout(location = 0) out vec4 airlight;
 
 void main() {
   load_scene();
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec3 dir = pixel_ray(gl_FragCoord.xy);
-  CountedTriangle c = counted[triangle];
-  if (!covers(exact, c, dir)) discard;
-  float facing = dot(c.plane.xyz, dir);
-  float t = min((c.plane.w - dot(c.plane.xyz, frame.eye)) / facing, surface_distance(pixel));
+  FragmentCrossing x;
+  if (!fragment_crossing(x)) discard;
+  float t = min(x.t, surface_distance(pixel));
   vec3 sum = vec3(0.0);
   if (t > 0.0) {  // behind the eye (or grazing, NaN): Γ(0 → 0) = 0
-#define ADD_GAMMA(i) if (c.light_weight.x == i) sum = closed_form_airlight(i, frame.eye, dir, 0.0, t);
+#define ADD_GAMMA(i) if (x.c.light_weight.x == i) sum = closed_form_airlight(i, frame.eye, x.dir, 0.0, t);
     FOR_EACH_LIGHT(ADD_GAMMA)
 #undef ADD_GAMMA
   }
-  airlight = vec4(facing > 0.0 ? sum : -sum, 0.0);
+  airlight = vec4(x.facing > 0.0 ? sum : -sum, 0.0);
 }

@@ -6,22 +6,18 @@
 // beyond the visible surface says the ray ends inside the shell: the back
 // clamps to the surface's distance.
 #include "methods/kit/scene.glsl"
-#include "methods/kit/lit_intervals.glsl"
+#include "methods/kit/crossing_fragment.glsl"
 
 layout(r32ui, binding = 0) uniform coherent uimage2DArray bounds;
 
-flat in int triangle;
-flat in int exact;
-
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec3 dir = pixel_ray(gl_FragCoord.xy);
-  CountedTriangle c = counted[triangle];
-  if (!covers(exact, c, dir)) return;
-  float t = (c.plane.w - dot(c.plane.xyz, frame.eye)) / dot(c.plane.xyz, dir);
+  FragmentCrossing x;
+  if (!fragment_crossing(x)) return;
+  float t = x.t;
   if (!(t > 0.0)) return;  // behind the eye, or grazing (NaN): whether the eye is in the shell decides (sv_march.comp.glsl)
   float d = surface_distance(pixel);
-  int layer = 2 * c.light_weight.x;
+  int layer = 2 * x.c.light_weight.x;
   if (t < d) imageAtomicMin(bounds, ivec3(pixel, layer), floatBitsToUint(t));
   imageAtomicMax(bounds, ivec3(pixel, layer + 1), floatBitsToUint(min(t, d)));
 }
