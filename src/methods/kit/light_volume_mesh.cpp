@@ -87,7 +87,8 @@ std::vector<SettingSpec> light_volume_settings(int default_resolution) {
   using T = SettingSpec::Type;
   return {{"volume_resolution", T::integer, static_cast<double>(default_resolution), 32, 4096, {},
            "cells per side of the grid each shadow map (or cube face) is turned into for the light volume mesh "
-           "(Kingston §4.3.1, McCool 2000), clamped to the map's resolution: 2R² triangles per map, 12R² per cube"}};
+           "(Kingston §4.3.1, McCool 2000), clamped to the map's resolution: 2R² triangles per map, 12R² per cube "
+           "(light_volume's mesh; sv_march's shell twice that)"}};
 }
 
 LightVolumeMesh::LightVolumeMesh(int resolution, Depth depth) : resolution_(resolution), depth_(depth) {}
