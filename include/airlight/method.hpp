@@ -90,6 +90,11 @@ struct MethodInfo {
   std::string description;
   std::vector<SettingSpec> settings;
   std::function<std::unique_ptr<Method>(const Settings&)> create;
+  // About how much memory a frame takes per pixel at the default settings, CPU
+  // and GPU together (on llvmpipe the GPU's is the process's): measured, with a
+  // margin (docs/decisions.md, "Memory per pixel"). Sizes are refused up front
+  // when this times the pixel count exceeds the memory available.
+  int bytes_per_pixel = 0;
 };
 
 // Every registered method, in the order of docs/design.md §3.

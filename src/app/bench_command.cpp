@@ -5,9 +5,11 @@
 #include "app/floor.hpp"
 #include "app/measure.hpp"
 #include "app/method_settings.hpp"
+#include "app/output_check.hpp"
 #include "app/plot.hpp"
 #include "app/reference_cache.hpp"
 #include "app/scene_source.hpp"
+#include "core/atomic_file.hpp"
 #include "core/metrics.hpp"
 #include "core/progress.hpp"
 #include "gpu/gl.hpp"
@@ -17,7 +19,7 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <memory>
 
 namespace airlight::app {
@@ -284,12 +286,12 @@ std::string csv_field(const std::string& text) {
 }
 
 void write_csv(const std::filesystem::path& file, const std::vector<std::vector<std::string>>& rows) {
-  std::ofstream out(file);
+  std::ostringstream out;
   for (const auto& row : rows) {
     for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_field(row[i]);
     out << "\n";
   }
-  if (!out) throw Failure("cannot write " + file.string());
+  write_text_file(file, out.str());
 }
 
 // Pass names in the order first seen, so the columns follow the frame's passes.
@@ -422,10 +424,21 @@ std::filesystem::path equal_quality_file(const std::filesystem::path& csv) {
   return file.replace_filename(csv.stem().string() + "-equal-quality" + csv.extension().string());
 }
 
+void check_outputs(const BenchOptions& o, const std::vector<Size>& sizes, const std::vector<Variant>& variants) {
+  check_output_file("--csv", o.csv, {".csv"});
+  if (!o.plot.empty()) check_output_file("--plot", o.plot, {".png"});
+  check_output_dir("--cache", o.cache.empty() ? default_cache_dir() : std::filesystem::path(o.cache));
+  std::vector<const MethodInfo*> methods{&find_method("reference")};
+  for (const auto& v : variants) methods.push_back(v.method);
+  // The reference's two images stay cached beside each run.
+  for (const Size& size : sizes) check_memory("--sizes", size, methods, 2);
+}
+
 void bench(const BenchOptions& o) {
   const std::vector<Variant> variants = plan_variants(o);
   std::vector<Size> sizes;
   for (const auto& text : o.sizes) sizes.push_back(parse_size(text, "--sizes"));
+  check_outputs(o, sizes, variants);
   const std::vector<Scene> scenes = load_scenes(o);
   const std::vector<Measurement> rows = run_bench(o, scenes, sizes, variants);
   write_measurements(o.csv, rows);

@@ -4,8 +4,10 @@
 #include "app/contact_sheet.hpp"
 #include "app/measure.hpp"
 #include "app/method_settings.hpp"
+#include "app/output_check.hpp"
 #include "app/reference_cache.hpp"
 #include "app/scene_source.hpp"
+#include "core/atomic_file.hpp"
 #include "core/image_io.hpp"
 #include "core/metrics.hpp"
 #include "core/progress.hpp"
@@ -17,7 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <memory>
 
 namespace airlight::app {
@@ -160,7 +162,7 @@ std::string csv_field(const std::string& text) {
 
 // The columns README.md "## Comparing" documents.
 void write_csv(const std::vector<Result>& results, const std::string& pass, const fs::path& file) {
-  std::ofstream out(file);
+  std::ostringstream out;
   out << "method,settings,width,height,pass,rel_rmse,max_abs,psnr_db,mean_radiance,reference_mean,prepare_s,render_s,"
          "cached\n";
   char numbers[512];
@@ -170,7 +172,7 @@ void write_csv(const std::vector<Result>& results, const std::string& pass, cons
                   r.error.mean_reference, r.prepare_s, r.render_s, r.cached ? 1 : 0);
     out << csv_field(r.method) << ',' << csv_field(r.settings) << ',' << numbers << '\n';
   }
-  if (!out) throw Failure("cannot write " + file.string());
+  write_text_file(file, out.str());
 }
 
 // reference.pfm, then <index>_<method>.pfm in the order of --methods.
@@ -190,10 +192,22 @@ void write_sheet(const std::vector<Result>& results, float exposure, const fs::p
   write_contact_sheet(entries, exposure, file);
 }
 
+void check_outputs(const CompareOptions& o, Size size, const std::vector<Entry>& entries) {
+  check_output_file("--out", o.out, {".png"});
+  if (!o.csv.empty()) check_output_file("--csv", o.csv, {".csv"});
+  if (!o.images.empty()) check_output_dir("--images", o.images);
+  check_output_dir("--cache", o.cache.empty() ? default_cache_dir() : fs::path(o.cache));
+  std::vector<const MethodInfo*> methods{&find_method("reference")};
+  for (const auto& e : entries) methods.push_back(e.info);
+  // Every result's image is kept for the sheet, and the reference's surface with it.
+  check_memory("--size", size, methods, static_cast<int>(entries.size()) + 2);
+}
+
 void compare(const CompareOptions& o) {
   // Every argument is checked before the first (slow) render.
   const Size size = parse_size(o.size, "--size");
   const std::vector<Entry> entries = parse_entries(o);
+  check_outputs(o, size, entries);
   const Pass pass = o.pass == "composite" ? Pass::composite : Pass::airlight;
   const Scene scene = o.scene.load();
   std::vector<Result> results{

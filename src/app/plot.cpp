@@ -1,5 +1,7 @@
 #include "app/plot.hpp"
 
+#include "core/atomic_file.hpp"
+
 #include <airlight/error.hpp>
 
 #include <cairo.h>
@@ -228,8 +230,10 @@ void write_plot(const std::string& title, const std::vector<PlotSeries>& series,
   draw_legend(cr, shown);
   cairo_set_source_rgb(cr, 0, 0, 0);
   centred_text(cr, title, width / 2.0, 30, 16);
-  if (cairo_surface_write_to_png(surface.get(), file.c_str()) != CAIRO_STATUS_SUCCESS)
-    throw Failure("cannot write " + file.string());
+  write_atomically(file, [&](const std::filesystem::path& temp) {
+    if (cairo_surface_write_to_png(surface.get(), temp.c_str()) != CAIRO_STATUS_SUCCESS)
+      throw Failure("cannot write " + temp.string());
+  });
 }
 
 }  // namespace airlight::app

@@ -1,14 +1,13 @@
 #include "app/reference_cache.hpp"
 
+#include "core/atomic_file.hpp"
 #include "core/image_io.hpp"
 #include "reference/reference.hpp"
 
 #include <airlight/error.hpp>
 
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
-#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -120,34 +119,11 @@ Entry entry(const fs::path& dir, const std::string& key) {
   return {dir / (key + ".airlight.pfm"), dir / (key + ".surface.pfm"), dir / (key + ".json")};
 }
 
-// A unique name beside `target` with the same extension (write_image picks the
-// format by extension), renamed over it once complete.
-fs::path temp_beside(const fs::path& target) {
-  static std::atomic<int> counter{0};
-  return fs::path(target).replace_extension(".tmp" + std::to_string(::getpid()) + "_" + std::to_string(counter++) +
-                                            target.extension().string());
-}
-
-void publish(const fs::path& temp, const fs::path& target) {
-  std::error_code ec;
-  fs::rename(temp, target, ec);
-  if (ec) throw Failure("cannot write " + target.string() + ": " + ec.message());
-}
-
-void store_image(const Image& image, const fs::path& target) {
-  const fs::path temp = temp_beside(target);
-  write_image(image, temp);
-  publish(temp, target);
-}
-
 // The JSON is written last, so its presence means both images are complete.
 void store(const CachedReference& frame, const Entry& e) {
-  store_image(frame.airlight, e.airlight);
-  store_image(frame.surface, e.surface);
-  const fs::path temp = temp_beside(e.info);
-  if (!(std::ofstream(temp) << nlohmann::json{{"seconds", frame.seconds}}.dump() << "\n"))
-    throw Failure("cannot write " + temp.string());
-  publish(temp, e.info);
+  write_image(frame.airlight, e.airlight);
+  write_image(frame.surface, e.surface);
+  write_text_file(e.info, nlohmann::json{{"seconds", frame.seconds}}.dump() + "\n");
 }
 
 // The cached frame, or none when absent, unreadable or of another size.

@@ -1,7 +1,9 @@
 #include "app/commands.hpp"
 #include "app/measure.hpp"
 #include "app/method_settings.hpp"
+#include "app/output_check.hpp"
 #include "app/scene_source.hpp"
+#include "core/atomic_file.hpp"
 #include "core/image_io.hpp"
 #include "gpu/program.hpp"
 
@@ -13,7 +15,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <memory>
 #include <optional>
 
@@ -69,8 +70,7 @@ void write_report(const RenderOptions& o, const Scene& scene, const Settings& se
       {"stats", stats},
       {"programs_compiled", gpu::cached_program_count()},
       {"peak_rss_mib", peak_rss_mib()}};
-  std::ofstream file(o.report);
-  if (!(file << report.dump(2) << "\n")) throw Failure("cannot write " + o.report);
+  write_text_file(o.report, report.dump(2) + "\n");
 }
 
 void render(const RenderOptions& o) {
@@ -79,6 +79,9 @@ void render(const RenderOptions& o) {
   const Size size = parse_size(o.size, "--size");
   const MethodInfo& info = find_method(o.method);
   const Settings settings = method_settings(info, o.assignments);
+  check_output_file("--out", o.out, {".png", ".pfm", ".exr"});
+  if (!o.report.empty()) check_output_file("--report", o.report, {".json"});
+  check_memory("--size", size, {&info});
   const Scene scene = o.scene.load();
   auto method = info.create(settings);
   auto start = std::chrono::steady_clock::now();

@@ -1,5 +1,7 @@
 #include "core/image_io.hpp"
 
+#include "core/atomic_file.hpp"
+
 #include <airlight/error.hpp>
 
 #include <ImfChannelList.h>
@@ -156,10 +158,13 @@ Image read_exr(const fs::path& file) {
 
 void write_image(const Image& image, const fs::path& file, const ToneMap& tone) {
   const std::string ext = extension(file);
-  if (ext == ".png") return write_png(image, file, tone);
-  if (ext == ".pfm") return write_pfm(image, file);
-  if (ext == ".exr") return write_exr(image, file);
-  throw InputError(file.string(), "", "unknown image format '" + ext + "' (use .png, .pfm or .exr)");
+  if (ext != ".png" && ext != ".pfm" && ext != ".exr")
+    throw InputError(file.string(), "", "unknown image format '" + ext + "' (use .png, .pfm or .exr)");
+  write_atomically(file, [&](const fs::path& temp) {
+    if (ext == ".png") return write_png(image, temp, tone);
+    if (ext == ".pfm") return write_pfm(image, temp);
+    write_exr(image, temp);
+  });
 }
 
 Image read_image(const fs::path& file) {

@@ -80,6 +80,7 @@ Context::Context(Adopted) : owned_(false) {
     throw Failure("use_current_gl_context: no OpenGL 4.5 context is current on this thread (found " +
                   (renderer ? std::to_string(major) + "." + std::to_string(minor) : std::string("none")) + ")");
   renderer_ = reinterpret_cast<const char*>(renderer);
+  query_limits();
   while (glGetError() != GL_NO_ERROR) {
   }  // the caller's earlier errors are not airlight's
 }
@@ -94,6 +95,7 @@ Context::Context() {
     throw Failure(install_hint);
   }
   renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  query_limits();
   glEnable(GL_DEBUG_OUTPUT);
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // the message arrives inside the call that caused it
   glDebugMessageCallback(debug_callback, this);
@@ -111,6 +113,32 @@ void Context::debug_callback(GLenum, GLenum type, GLuint, GLenum severity, GLsiz
   // Errors and undefined behaviour fail; performance hints and notifications do not.
   if (type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR || severity == GL_DEBUG_SEVERITY_HIGH)
     const_cast<Context*>(static_cast<const Context*>(self))->errors_.push_back(message);
+}
+
+// The smallest of the limits a frame's targets meet: each is a texture attached
+// to a framebuffer and drawn through a viewport.
+void Context::query_limits() {
+  GLint texture = 0, width = 0, height = 0, viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &width);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &height);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  auto smallest = [texture](GLint framebuffer, const char* framebuffer_name, GLint view, const char* view_name) {
+    Limit limit{texture, "GL_MAX_TEXTURE_SIZE"};
+    if (framebuffer < limit.side) limit = {framebuffer, framebuffer_name};
+    if (view < limit.side) limit = {view, view_name};
+    return limit;
+  };
+  width_limit_ = smallest(width, "GL_MAX_FRAMEBUFFER_WIDTH", viewport[0], "GL_MAX_VIEWPORT_DIMS");
+  height_limit_ = smallest(height, "GL_MAX_FRAMEBUFFER_HEIGHT", viewport[1], "GL_MAX_VIEWPORT_DIMS");
+}
+
+void Context::check_frame_size(int width, int height) const {
+  for (const auto& [side, limit] : {std::pair{width, width_limit_}, std::pair{height, height_limit_}})
+    if (side > limit.side)
+      throw InputError("frame", "size",
+                       std::to_string(width) + "x" + std::to_string(height) + " exceeds this OpenGL implementation's " +
+                           std::to_string(limit.side) + " pixels per side (" + limit.name + ", " + renderer_ + ")");
 }
 
 void Context::check(const std::string& where) {

@@ -28,6 +28,12 @@ public:
 
   const std::string& renderer() const { return renderer_; }
 
+  // Throws InputError("frame", "size") when a frame of width × height cannot be
+  // one framebuffer of this implementation: beyond its texture, framebuffer or
+  // viewport limit, queried once (glGet), so a size is refused before anything
+  // is allocated instead of failing as an incomplete framebuffer.
+  void check_frame_size(int width, int height) const;
+
   // Throws Failure listing the GL errors reported since the last check; `where`
   // names the pass that was running.
   void check(const std::string& where);
@@ -41,6 +47,12 @@ private:
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
   std::string renderer_;
+  struct Limit {
+    int side;
+    const char* name;
+  };
+  Limit width_limit_{}, height_limit_{};
+  void query_limits();
   std::vector<std::string> errors_;
   bool owned_ = true;  // false: the caller's context, whose debug output stays the caller's
 };

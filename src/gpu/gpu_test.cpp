@@ -5,6 +5,7 @@
 #include <airlight/error.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace airlight::gpu {
@@ -20,6 +21,29 @@ TEST(Gpu, HeadlessContextIsOpenGl45Core) {
   EXPECT_TRUE(profile & GL_CONTEXT_CORE_PROFILE_BIT);
   EXPECT_FALSE(context.renderer().empty());
   std::printf("renderer: %s\n", context.renderer().c_str());
+}
+
+// A frame one pixel wider than the implementation's smallest limit on a
+// framebuffer's side is refused by name, before anything is allocated.
+TEST(Gpu, FrameSizeBeyondTheImplementationsLimitIsRefusedByName) {
+  Context& context = Context::headless();
+  GLint texture = 0, framebuffer = 0, viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &framebuffer);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  std::printf("max texture %d, framebuffer width %d, viewport %d\n", texture, framebuffer, viewport[0]);
+  const int side = std::min({texture, framebuffer, viewport[0]});
+  const char* name = side == texture ? "GL_MAX_TEXTURE_SIZE" : side == framebuffer ? "GL_MAX_FRAMEBUFFER_WIDTH"
+                                                                                    : "GL_MAX_VIEWPORT_DIMS";
+  EXPECT_NO_THROW(context.check_frame_size(side, 1));
+  try {
+    context.check_frame_size(side + 1, 1);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "frame: size: " + std::to_string(side + 1) + "x1 exceeds this OpenGL "
+                                     "implementation's " + std::to_string(side) + " pixels per side (" + name +
+                                     ", " + context.renderer() + ")");
+  }
 }
 
 TEST(Gpu, ComputeProgramWithIncludesAndDefinesWritesABuffer) {

@@ -74,7 +74,8 @@ MethodInfo analytic_method() {
           "Nilsson eq. 2.17), with F(u, v) from a table or integrated in the shader; no volumetric shadows "
           "(occluders only end the view ray), and the medium that fills space only: bounded volumes and gobo "
           "colours are ignored",
-          kit::gpu_settings(analytic_settings()), [](const Settings& s) { return std::make_unique<Analytic>(s); }};
+          kit::gpu_settings(analytic_settings()), [](const Settings& s) { return std::make_unique<Analytic>(s); },
+          128};
 }
 
 }  // namespace

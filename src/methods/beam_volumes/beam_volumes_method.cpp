@@ -102,7 +102,8 @@ MethodInfo beam_volumes_method() {
           "exact volumetric shadows from a beam tree per light (a BSP tree of planes through the light, any "
           "polygon order): the pyramids between the light and the polygons it sees first, backplate included, "
           "bound its lit region; per pixel the closed-form Γ summed over the lit intervals",
-          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<BeamVolumes>(s); }};
+          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<BeamVolumes>(s); },
+          224};
 }
 
 }  // namespace

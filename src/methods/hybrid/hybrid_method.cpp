@@ -16,7 +16,8 @@ MethodInfo hybrid_method() {
           "rasterized, each fully lit slab integrated exactly by the closed-form Γ, uncertain slabs sampled with "
           "the shadow-map test",
           kit::gpu_settings(kit::plane_settings(true)),
-          [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::gamma); }};
+          [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::gamma); },
+          160};
 }
 
 }  // namespace

@@ -14,7 +14,8 @@ MethodInfo hybrid_clip_method() {
           "rasterized, fully lit parts sampled without the shadow-map test, uncertain parts with it; with "
           "sampling=plane the image of planes, from fewer fragments",
           kit::gpu_settings(kit::plane_settings(true)),
-          [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::clip); }};
+          [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::clip); },
+          160};
 }
 
 }  // namespace

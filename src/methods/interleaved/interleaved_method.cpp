@@ -69,7 +69,8 @@ MethodInfo interleaved_method() {
           "raymarch with the N samples spread over M×M pixel blocks (interleaved sampling, Keller & "
           "Heidrich 2001) and gathered by a separable sum, normalized by each pixel's unshadowed ∫I/r² and "
           "depth-aware by default",
-          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<Interleaved>(s); }};
+          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<Interleaved>(s); },
+          224};
 }
 
 }  // namespace

@@ -294,6 +294,9 @@ struct Case {
   int size;
 };
 
+// gtest prints a parameter it cannot print as a byte dump in ctest's listing.
+void PrintTo(const Case& c, std::ostream* os) { *os << name(c.kind) << " map " << c.size << "²"; }
+
 class LightVolume : public ::testing::TestWithParam<Case> {};
 
 TEST_P(LightVolume, ClosedAndOutwardAtEveryResolutionAndDepth) {

@@ -1,6 +1,7 @@
 #include "methods/kit/scene_frame.hpp"
 
 #include "geometry/camera.hpp"
+#include "gpu/context.hpp"
 #include "gpu/program.hpp"
 #include "methods/kit/frame_data.hpp"
 #include "methods/kit/scene_defines.hpp"
@@ -337,6 +338,7 @@ void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings
 
 void SceneFrame::resize(int width, int height) {
   if (distance_ && width == inputs_.width && height == inputs_.height) return;
+  gpu::Context::current().check_frame_size(width, height);
   distance_ = render_target(GL_R32F, width, height);
   normal_ = render_target(GL_RGBA32F, width, height);
   geometric_normal_ = render_target(GL_RGBA32F, width, height);

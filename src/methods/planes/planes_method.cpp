@@ -13,7 +13,8 @@ MethodInfo planes_method() {
           "I(θ,φ)·ξ·V·Δt (light map, ξ per fragment or on a lattice mesh, shadow-map test) by additive blending "
           "into a float target",
           kit::gpu_settings(kit::plane_settings()),
-          [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::none); }};
+          [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::none); },
+          160};
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ MethodInfo raymarch_method() {
           "visibility, samples at the middle of each step or jittered by a noise texture, in even steps "
           "or equiangular about each point and spot light",
           kit::gpu_settings(kit::march_settings()),
-          [](const Settings& s) { return std::make_unique<Raymarch>(s); }};
+          [](const Settings& s) { return std::make_unique<Raymarch>(s); },
+          160};
 }
 
 }  // namespace

@@ -49,7 +49,8 @@ MethodInfo shadow_planes_method() {
           "summed, piece by piece through bounded volumes (Biri §5.2); gobos and the light's leg through other "
           "volumes by a sampled ratio",
           kit::gpu_settings(kit::lit_interval_settings()),
-          [](const Settings& s) { return std::make_unique<ShadowPlanes>(s); }};
+          [](const Settings& s) { return std::make_unique<ShadowPlanes>(s); },
+          224};
 }
 
 }  // namespace

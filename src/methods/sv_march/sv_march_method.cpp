@@ -101,7 +101,8 @@ MethodInfo sv_march_method() {
           "ray marching only where shadows can change: each light's shadow map made a conservative shell mesh "
           "on the GPU every frame, each pixel's ray marched with shadow-map lookups (raymarch's steps, sampling "
           "and jitter) only between its first and last crossing with it, the closed-form Γ before and after",
-          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<SvMarch>(s); }};
+          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<SvMarch>(s); },
+          176};
 }
 
 }  // namespace
