@@ -33,7 +33,7 @@ float henyey_greenstein(float g, float c) {
   return (1.0 - g) * (1.0 + g) * INV_4PI / (denom * sqrt(denom));
 }
 
-// Schlick (Kingston eq. 15 with the sign of eq. 14: k > 0 scatters forward, seeds README).
+// Schlick (Kingston eq. 15 with the sign of eq. 14: k > 0 scatters forward, docs/decisions.md).
 float schlick_lobe(float k, float c) {
   float denom = one_minus_kc(k, c);
   return (1.0 - k) * (1.0 + k) * INV_4PI / (denom * denom);
@@ -48,7 +48,7 @@ float half_one_plus_c_pow2n(float c, int n) {
 }
 
 // Nishita's hazy (1 + 9cos¹⁶(θ/2)) and murky (1 + 50cos⁶⁴(θ/2)) lobes normalized
-// over the sphere: ∫ = 8π and 332π/33 (seeds README; Nilsson Appendix A's K is wrong).
+// over the sphere: ∫ = 8π and 332π/33 (docs/decisions.md: Nilsson Appendix A's K is wrong).
 // cos^16(θ/2) = ((1+c)/2)^8, cos^64(θ/2) = ((1+c)/2)^32.
 float hazy_lobe(float c) { return (1.0 + 9.0 * half_one_plus_c_pow2n(c, 3)) / (8.0 * PI); }
 float murky_lobe(float c) { return 33.0 * (1.0 + 50.0 * half_one_plus_c_pow2n(c, 5)) / (332.0 * PI); }

@@ -64,7 +64,7 @@ float sun_tan_xi(float e, float r0, float r) { return e >= 0.0 ? (e + r) / r0 : 
 // x = xs, at distance r0: Kingston eqs. 36-39 with x - xs = r0 tan(2ξ - π/2),
 // as ONE integral A0·e^{-σt d_lv}·∫ exp(-σt r0 (tan ξ - tan ξ0)) dξ (the
 // difference F(A1, A2) - F(A1, γ/2) cancels catastrophically at large σt d_lv,
-// seeds README). The ξ range starts at ξ0 = γ/2 and spans half the angle the
+// docs/decisions.md, Numerics). The ξ range starts at ξ0 = γ/2 and spans half the angle the
 // segment subtends at the light, from atan2 of cross and dot (as the C++).
 // r0 is clamped at MIN_LIGHT_DISTANCE, so a light on the ray stays finite (the
 // C++ clamps r instead: the two differ only when the light is within 1 µm of the ray).

@@ -20,7 +20,7 @@ constexpr double pi = std::numbers::pi;
 // With the foot of the perpendicular from the light at x = xs, distance h, Biri
 // writes x - xs = h·tan φ (exact): dx/r² = dφ/h, cos θ = -sin φ. We integrate
 // in s = gd⁻¹(φ) = asinh((x - xs)/h) instead of his degree-4 polynomial in φ
-// (seeds README: off by percents to orders of magnitude near ±π/2): tan φ =
+// (off by percents to orders of magnitude near ±π/2; docs/decisions.md, Numerics): tan φ =
 // sinh s, r = h·cosh s, dφ = ds/cosh s, x + r = xs + h·e^s, cos θ = -tanh s.
 // Forward and backward phase peaks at φ → ∓π/2 become O(1)-wide features at
 // s ≈ ±ln(2/width), and the integrand is analytic and bounded in the strip
@@ -55,7 +55,7 @@ Foot foot_of(const Ray& ray, const glm::dvec3& light) {
   const glm::dvec3 delta = light - ray.origin;
   Foot f;
   f.xs = glm::dot(delta, ray.dir);
-  const glm::dvec3 off = delta - f.xs * ray.dir;  // Nilsson eq. 2.16 as |Δ - zs·Ω| (seeds README)
+  const glm::dvec3 off = delta - f.xs * ray.dir;  // Nilsson eq. 2.16 as |Δ - zs·Ω| (docs/decisions.md, Numerics)
   const double h = glm::length(off);
   f.normal = h > 0.0 ? off / h : glm::normalize(glm::cross(ray.dir, glm::dvec3(ray.dir.y, ray.dir.z, -ray.dir.x)));
   // Within 1 µm of the line the light is moved 1 µm off it (min_light_distance):

@@ -21,7 +21,7 @@ double henyey_greenstein(double g, double cos_theta) {
 }
 
 // Schlick (Kingston eq. 15, with the sign of eq. 14 so that k > 0 scatters
-// forward like g > 0; his eq. 15 has the opposite convention, seeds README).
+// forward like g > 0; his eq. 15 has the opposite convention, docs/decisions.md, Model).
 double schlick(double k, double cos_theta) {
   const double denom = 1.0 - k * cos_theta;
   return (1.0 - k * k) / (4.0 * pi * denom * denom);
@@ -45,8 +45,8 @@ double phase(const PhaseLobe& lobe, double cos_theta) {
     case PhaseType::henyey_greenstein: return henyey_greenstein(g, cos_theta);
     case PhaseType::schlick: return schlick(schlick_k(g), cos_theta);
     // Nishita's hazy and murky lobes, normalized over the sphere (dΩ = 2π d cos θ):
-    // ∫(1 + 9cos¹⁶(θ/2)) dΩ = 8π, ∫(1 + 50cos⁶⁴(θ/2)) dΩ = 332π/33 (seeds README;
-    // Nilsson Appendix A's K is wrong).
+    // ∫(1 + 9cos¹⁶(θ/2)) dΩ = 8π, ∫(1 + 50cos⁶⁴(θ/2)) dΩ = 332π/33 (docs/decisions.md,
+    // Model: Nilsson Appendix A's K is wrong).
     case PhaseType::hazy: return (1.0 + 9.0 * cos_half_pow(cos_theta, 16)) / (8.0 * pi);
     case PhaseType::murky: return 33.0 * (1.0 + 50.0 * cos_half_pow(cos_theta, 64)) / (332.0 * pi);
   }

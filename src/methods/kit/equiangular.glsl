@@ -18,7 +18,7 @@ Segment uniform_segment(float a, float b) { return Segment(a, b, 0.0, 0.0, 0.0, 
 
 // Equiangular steps over [a, b] (b > a) of the ray eye + t·dir for a light at
 // `light`. h = |Δ − foot·dir|, not sqrt(|Δ|² − foot²), which cancels for a light
-// near the ray (seeds README, Nilsson eq. 2.16). A ray through the light has
+// near the ray (Nilsson eq. 2.16; docs/decisions.md, Numerics). A ray through the light has
 // h = 0 and ∫dx/r² diverges: h is kept above 1e-4 of the interval, which
 // still maps θ onto [a, b] exactly (any h > 0 does), only less peaked.
 Segment equiangular_segment(float a, float b, vec3 eye, vec3 dir, vec3 light) {

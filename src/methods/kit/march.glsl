@@ -9,7 +9,7 @@
 //
 // Sample k of N sits at u = (k + offset)/N of its interval: offset 0.5 puts it
 // at the middle of its step (Tóth's eq. 1 sums N + 1 end-point terms, error
-// ~1/N; the midpoint rule's is ~1/N², seeds README), a per-pixel noise offset
+// ~1/N; the midpoint rule's is ~1/N², docs/decisions.md), a per-pixel noise offset
 // (Kingston §5.1.1) turns the steps' banding into noise. u maps to the ray by
 //  - uniform steps (the documents' method): x = a + u·(b − a), w = (b − a)/N;
 //  - equiangular steps (Kulla & Fajardo 2012, "Importance sampling techniques

@@ -440,7 +440,7 @@ TEST(OpticsTwin, SunFunctionAndAirlight) {
     c.d = log_uniform(-3, 3);
     cases.push_back(c);
   }
-  // The cancellation trap of the seeds README: σt·d_lv ≈ 8, γ > π/2.
+  // The cancellation of F(A1, A2) − F(A1, γ/2) (docs/decisions.md, Numerics): σt·d_lv ≈ 8, γ > π/2.
   for (int i = 0; i < 64; ++i) {
     SunCase c = cases[i];
     c.sigma_t = 0.8f;
