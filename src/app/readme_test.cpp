@@ -1,0 +1,144 @@
+// README.md as a new user reads it (issue 15): its commands run as printed and
+// its example messages are the ones the command really prints.
+#include "app/command_test_support.hpp"
+
+#include <map>
+#include <regex>
+#include <set>
+
+namespace airlight {
+namespace {
+
+using namespace test;
+
+const std::string readme = read_text(fs::path(AIRLIGHT_SOURCE_DIR) / "README.md");
+
+// The commands of README's indented code blocks, continuation lines joined,
+// split into words as the shell would (single quotes group).
+std::vector<std::vector<std::string>> readme_commands() {
+  std::vector<std::vector<std::string>> commands;
+  std::istringstream lines(readme);
+  std::string command;
+  for (std::string line; std::getline(lines, line);) {
+    if (command.empty()) {
+      const size_t start = line.find_first_not_of(' ');
+      if (start < 4 || start == std::string::npos) continue;
+      line = line.substr(start);
+      if (line.rfind("airlight ", 0) != 0 && line.rfind("build/release/src/app/airlight ", 0) != 0) continue;
+    }
+    const bool continued = !line.empty() && line.back() == '\\';
+    command += continued ? line.substr(0, line.size() - 1) : line;
+    if (continued) continue;
+    std::vector<std::string> words;
+    std::string word;
+    bool quoted = false, in_word = false;
+    for (const char c : command.substr(0, command.find("  #"))) {
+      if (c == '\'') quoted = !quoted, in_word = true;
+      else if (c == ' ' && !quoted) {
+        if (in_word) words.push_back(word);
+        word.clear(), in_word = false;
+      } else word += c, in_word = true;
+    }
+    if (in_word) words.push_back(word);
+    commands.push_back(words);
+    command.clear();
+  }
+  return commands;
+}
+
+// Runs AIRLIGHT_EXE with `args` in `dir`.
+Outcome run_in(const fs::path& dir, const std::string& args, const std::string& env = "") {
+  const fs::path out = work_dir() / "readme_stdout.txt", err = work_dir() / "readme_stderr.txt";
+  const std::string command = "cd " + dir.string() + " && " + (env.empty() ? "" : "env " + env + " ") +
+                              AIRLIGHT_EXE + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int raw = std::system(command.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};
+}
+
+// How README says to call the command: installed (on PATH), or by its build path.
+TEST(Readme, SaysHowTheCommandGetsOnThePath) {
+  EXPECT_NE(readme.find("cmake --install build/release"), std::string::npos);
+  bool bare = false;
+  for (const auto& words : readme_commands()) bare = bare || words.at(0) == "airlight";
+  EXPECT_TRUE(bare) << "README calls the installed command airlight";
+}
+
+// Every option a README command passes is one its subcommand has, and nothing
+// is pasted with the brackets of a usage line.
+TEST(Readme, CommandsUseOnlyOptionsTheirSubcommandHas) {
+  const auto commands = readme_commands();
+  ASSERT_GE(commands.size(), 5u);
+  std::map<std::string, std::string> help;
+  for (const auto& words : commands) {
+    ASSERT_GE(words.size(), 2u);
+    const std::string& sub = words[1];
+    if (!help.contains(sub)) help[sub] = run_in(work_dir(), sub + " --help").out;
+    for (const auto& word : words) {
+      EXPECT_EQ(word.find_first_of("[]"), std::string::npos) << "brackets in README's command: " << word;
+      if (word.rfind("--", 0) != 0) continue;
+      const std::string option = word.substr(0, word.find('='));
+      EXPECT_NE(help[sub].find(option), std::string::npos) << "airlight " << sub << " has no " << option;
+    }
+  }
+}
+
+// The quick ones (list, render, compare) run from a fresh directory as printed,
+// with the repository's examples beside them.
+TEST(Readme, QuickCommandsRunAsPrinted) {
+  const fs::path dir = work_dir() / "readme_run";
+  fs::create_directories(dir / "out");
+  fs::create_directory_symlink(fs::path(AIRLIGHT_SOURCE_DIR) / "examples", dir / "examples");
+  int ran = 0;
+  for (const auto& words : readme_commands()) {
+    if (words[1] != "list" && words[1] != "render" && words[1] != "compare") continue;
+    std::string args;
+    for (size_t i = 1; i < words.size(); ++i) args += " '" + words[i] + "'";
+    const Outcome o = run_in(dir, args, "AIRLIGHT_CACHE=" + (dir / "cache").string());
+    EXPECT_EQ(o.status, 0) << "airlight" << args << "\n" << o.err;
+    ++ran;
+  }
+  EXPECT_GE(ran, 4);
+}
+
+// Each message README quotes, reproduced by the input it describes.
+struct Example {
+  std::map<std::string, std::string> files;  // written into the run's directory first
+  std::string args;
+};
+
+const std::map<std::string, Example>& examples() {
+  static const std::map<std::string, Example> all = {
+      {"airlight: error: scenes/x.json: lights[1].cone_deg: must be in (0, 180], got 200",
+       {{{"scenes/x.json",
+          R"({"format": "airlight-scene/1", "lights": [{"type": "point", "position": [0, 1, 0], "intensity": 1},
+              {"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "intensity": 1, "cone_deg": 200}]})"}},
+        "render --scene scenes/x.json --out x.png"}},
+  };
+  return all;
+}
+
+TEST(Readme, ExampleMessagesAreTheRealOnes) {
+  const std::regex quoted("`(airlight: (error|warning): [^`]*)`");
+  std::set<std::string> seen;
+  for (std::sregex_iterator it(readme.begin(), readme.end(), quoted), end; it != end; ++it) {
+    const std::string message = (*it)[1];
+    seen.insert(message);
+    const auto example = examples().find(message);
+    if (example == examples().end()) {
+      ADD_FAILURE() << "README quotes a message this test cannot reproduce: " << message;
+      continue;
+    }
+    const fs::path dir = work_dir() / ("message_" + std::to_string(seen.size()));
+    for (const auto& [name, text] : example->second.files) {
+      fs::create_directories((dir / name).parent_path());
+      std::ofstream(dir / name) << text;
+    }
+    fs::create_directories(dir);
+    const Outcome o = run_in(dir, example->second.args);
+    EXPECT_NE(o.err.find(message + "\n"), std::string::npos) << "README: " << message << "\nreal: " << o.err;
+  }
+  EXPECT_EQ(seen.size(), examples().size()) << "an example here that README no longer quotes";
+}
+
+}  // namespace
+}  // namespace airlight
