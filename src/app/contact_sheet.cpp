@@ -132,13 +132,30 @@ void paint(cairo_t* cr, cairo_surface_t* surface, double x, double y) {
   cairo_paint(cr);
 }
 
-// The heat maps' colour scale, ticks at quarters of its top, the last one "≥ top".
-void draw_colour_bar(cairo_t* cr, double x, double y, double width, const HeatScale& scale) {
-  const double max_error = scale.top;
+void set_font(cairo_t* cr) {
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, font_size);
+}
+
+// The colour bar's caption, wrapped to `width`: a sheet of two columns is ~400 px
+// wide, too narrow for the scale's sentence on one line.
+std::vector<std::string> bar_caption(const HeatScale& scale, double width) {
+  SurfacePtr scratch(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1), cairo_surface_destroy);
+  ContextPtr context(cairo_create(scratch.get()), cairo_destroy);
+  set_font(context.get());
+  std::vector<std::string> lines =
+      wrap(context.get(), "error maps: |image - reference|, largest over RGB, W/(m^2 sr), one scale for all", width, 2);
+  for (const auto& line : wrap(context.get(), describe(scale), width, 3)) lines.push_back(line);
+  return lines;
+}
+
+// The heat maps' colour scale under its caption, ticks at quarters of its top,
+// the last one "≥ top".
+void draw_colour_bar(cairo_t* cr, double x, double y, double width, const std::vector<std::string>& caption,
+                     double max_error) {
   cairo_set_source_rgb(cr, 0, 0, 0);
-  text_at(cr, x, y + line_h - 3.0, "error maps: |image - reference|, largest over RGB, W/(m^2 sr), one scale for all");
-  text_at(cr, x, y + 2 * line_h - 3.0, describe(scale));
-  const double bar_y = y + 2 * line_h;
+  for (size_t i = 0; i < caption.size(); ++i) text_at(cr, x, y + line_h * (i + 1.0) - 3.0, caption[i]);
+  const double bar_y = y + line_h * static_cast<double>(caption.size());
   const SurfacePtr bar = pixel_surface(static_cast<int>(width), bar_h, 1, [&](int i, int) {
     const glm::dvec3 c = inferno(i / (width - 1.0));
     return rgb24(c.r, c.g, c.b);
@@ -189,15 +206,15 @@ void write_contact_sheet(const std::vector<SheetEntry>& entries, const HeatScale
   const int n = static_cast<int>(entries.size());
   const int sheet_w = margin + n * (cell_w + margin);
   const int heat_y = margin + label_h + image_h + margin, bar_y = heat_y + image_h + margin;
-  const int sheet_h = bar_y + 2 * line_h + bar_h + 4 + line_h + margin;
+  const std::vector<std::string> caption = bar_caption(scale, sheet_w - 2 * margin);
+  const int sheet_h = bar_y + static_cast<int>(caption.size()) * line_h + bar_h + 4 + line_h + margin;
 
   SurfacePtr sheet(cairo_image_surface_create(CAIRO_FORMAT_RGB24, sheet_w, sheet_h), cairo_surface_destroy);
   ContextPtr context(cairo_create(sheet.get()), cairo_destroy);
   cairo_t* cr = context.get();
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, font_size);
+  set_font(cr);
   for (int i = 0; i < n; ++i) {
     const SheetEntry& e = entries[i];
     const double x = margin + i * (cell_w + margin), image_x = x + (cell_w - image_w) / 2;
@@ -205,7 +222,7 @@ void write_contact_sheet(const std::vector<SheetEntry>& entries, const HeatScale
     paint(cr, tone_mapped(*e.image, zoom, tone).get(), image_x, margin + label_h);
     paint(cr, heat_map(*e.image, reference, zoom, scale.top).get(), image_x, heat_y);
   }
-  draw_colour_bar(cr, margin, bar_y, sheet_w - 2 * margin, scale);
+  draw_colour_bar(cr, margin, bar_y, sheet_w - 2 * margin, caption, scale.top);
   cairo_surface_flush(sheet.get());
   if (const cairo_status_t status = cairo_surface_write_to_png(sheet.get(), file.c_str()); status != CAIRO_STATUS_SUCCESS)
     throw Failure("cannot write " + file.string() + ": " + cairo_status_to_string(status));
