@@ -193,7 +193,8 @@ HeatScale heat_scale(const std::vector<SheetEntry>& entries) {
 }
 
 std::string describe(const HeatScale& scale) {
-  return "scale 0 to " + format("%.3g", scale.top) + " W/(m^2 sr): the 99th percentile of the nonzero errors; larger ones, up to " +
+  return "scale 0 to " + format("%.3g", scale.top) +
+         " W/(m^2 sr): the 99th percentile of the nonzero errors; larger ones, up to " +
          format("%.3g", scale.largest) + ", saturate";
 }
 

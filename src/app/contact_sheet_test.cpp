@@ -28,7 +28,8 @@ TEST(ContactSheet, HeatScaleIsThe99thPercentileNotTheOutlier) {
   EXPECT_NEAR(scale.top, 0.198, 1e-6);
   EXPECT_NEAR(scale.largest, 1000.0, 1e-3);
   EXPECT_EQ(describe(scale),
-            "scale 0 to 0.198 W/(m^2 sr): the 99th percentile of the nonzero errors; larger ones, up to 1e+03, saturate");
+            "scale 0 to 0.198 W/(m^2 sr): the 99th percentile of the nonzero errors; "
+            "larger ones, up to 1e+03, saturate");
 }
 
 TEST(ContactSheet, ExactPixelsAndTheReferenceColumnDoNotLowerTheScale) {

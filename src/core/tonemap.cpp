@@ -2,7 +2,7 @@
 
 #include "core/image_io.hpp"
 
-#include <glm/mat3x3.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +15,7 @@ namespace {
 // the ACES fit's products finite for huge or infinite radiance.
 constexpr float brightest = 1e6f;
 
-// glm::mat3 is column-major: each glm::vec3 below is one column, as in GLSL.
+// The matrix whose rows are r, g, b, applied to v.
 glm::vec3 rows(const glm::vec3& r, const glm::vec3& g, const glm::vec3& b, glm::vec3 v) {
   return {glm::dot(r, v), glm::dot(g, v), glm::dot(b, v)};
 }
@@ -90,7 +90,8 @@ float luminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.07
 
 glm::vec3 tone_map(glm::vec3 radiance, const ToneMap& tone) {
   glm::vec3 v;
-  for (int c = 0; c < 3; ++c) v[c] = std::isnan(radiance[c]) ? 0.0f : std::clamp(radiance[c] * tone.exposure, 0.0f, brightest);
+  for (int c = 0; c < 3; ++c)
+    v[c] = std::isnan(radiance[c]) ? 0.0f : std::clamp(radiance[c] * tone.exposure, 0.0f, brightest);
   const glm::vec3 linear = tone.curve == ToneCurve::agx ? agx(v) : tone.curve == ToneCurve::aces ? aces(v) : v;
   return {linear_to_srgb(linear.r), linear_to_srgb(linear.g), linear_to_srgb(linear.b)};  // clamps to [0, 1]
 }

@@ -46,7 +46,8 @@ TEST(ToneMap, EveryCurveIsMonotonicInLuminanceFrom1eMinus4To1e4) {
 }
 
 TEST(ToneMap, BlackStaysBlack) {
-  for (ToneCurve curve : curves) EXPECT_EQ(tone_map(glm::vec3(0.0f), {1.0f, curve}), glm::vec3(0.0f)) << tone_curve_name(curve);
+  for (ToneCurve curve : curves)
+    EXPECT_EQ(tone_map(glm::vec3(0.0f), {1.0f, curve}), glm::vec3(0.0f)) << tone_curve_name(curve);
 }
 
 TEST(ToneMap, AgxAndAcesRollOffWhereClampClips) {
@@ -68,7 +69,8 @@ double agx_polynomial(double x) {
 
 TEST(ToneMap, AgxSigmoidIsTheFitsPolynomial) {
   // 1e-6: float evaluation of a polynomial whose terms reach ±15.
-  for (double x : {0.0, 0.25, 0.5, 20.0 / 33.0, 0.75, 1.0}) EXPECT_NEAR(agx_contrast(float(x)), agx_polynomial(x), 1e-6) << x;
+  for (double x : {0.0, 0.25, 0.5, 20.0 / 33.0, 0.75, 1.0})
+    EXPECT_NEAR(agx_contrast(float(x)), agx_polynomial(x), 1e-6) << x;
   EXPECT_NEAR(agx_contrast(0.0f), -0.00232, 1e-7);     // its black level, clipped to 0 after the outset
   EXPECT_NEAR(agx_contrast(1.0f), 0.99858, 1e-6);      // the sum of the coefficients: white stays below 1
   EXPECT_NEAR(agx_contrast(20.0f / 33.0f), 0.49673, 1e-5);  // mid grey sits at x = 10/16.5
