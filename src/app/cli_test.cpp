@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +80,16 @@ TEST(Cli, BadOptionsExitTwoNamingTheOption) {
   EXPECT_EQ(run("list colours").status, 2);
 }
 
+TEST(Cli, ExposureIsAPositiveNumberOrAuto) {
+  const std::string render = "render --builtin teapot_spot --size 8x6 --out " + (work_dir() / "x.png").string();
+  for (const std::string bad : {"x", "0", "-2", "nan", "inf", "2x"}) {
+    const Outcome o = run(render + " --exposure=" + bad);  // '=': CLI11 would read " -2" as an option
+    EXPECT_EQ(o.status, 2) << bad;
+    EXPECT_EQ(o.err, "airlight: error: --exposure: must be a positive number or auto, got '" + bad + "'\n");
+  }
+  EXPECT_EQ(run(render + " --tonemap filmic").status, 2);
+}
+
 // Without a usable OpenGL driver a GPU method fails with exit 1 and says what to
 // install. Two ways to lose the driver: Mesa finds no DRI driver, or libglvnd
 // finds no EGL vendor at all.
@@ -103,7 +114,7 @@ TEST(Cli, ListNamesMethodsAndScenes) {
 TEST(Cli, RenderWritesImageAndReport) {
   const fs::path image = work_dir() / "a.pfm", report = work_dir() / "a.json";
   const Outcome o = run("render --builtin teapot_spot --pass airlight --size 32x24 --out " + image.string() +
-                        " --report " + report.string());
+                        " --report " + report.string() + " --tonemap aces --exposure auto");
   ASSERT_EQ(o.status, 0) << o.err;
   const Image a = read_image(image);
   ASSERT_EQ(a.width, 32);
@@ -127,6 +138,13 @@ TEST(Cli, RenderWritesImageAndReport) {
   }());
   EXPECT_GT(r["stats"]["shadow_rays"].get<double>(), 0.0);
   EXPECT_GT(r["timings"]["render_s"].get<double>(), 0.0);
+  // The exposure PNG output would use, measured on the image; 1e-6 relative: float sums.
+  EXPECT_EQ(r["tonemap"]["curve"], "aces");
+  EXPECT_EQ(r["tonemap"]["auto"], true);
+  EXPECT_NEAR(r["tonemap"]["exposure"].get<double>(), auto_exposure(a), 1e-6 * auto_exposure(a));
+  char printed[64];
+  std::snprintf(printed, sizeof printed, "render: --exposure auto: %.4g\n", auto_exposure(a));
+  EXPECT_NE(o.err.find(printed), std::string::npos) << o.err;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "app/output_check.hpp"
 #include "app/reference_cache.hpp"
 #include "app/scene_source.hpp"
+#include "app/tone_options.hpp"
 #include "core/atomic_file.hpp"
 #include "core/image_io.hpp"
 #include "core/metrics.hpp"
@@ -19,8 +20,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <memory>
+#include <sstream>
 
 namespace airlight::app {
 
@@ -32,7 +33,7 @@ struct CompareOptions {
   SceneSource scene;
   std::string methods, size = "256x192", pass = "airlight", out, csv, images, cache;
   std::vector<std::string> assignments;
-  float exposure = 1.0f;
+  ToneOptions tone;
 };
 
 // One entry of --methods: "name" or "name:key=value;key=value".
@@ -185,11 +186,14 @@ void write_images(const std::vector<Result>& results, const fs::path& dir) {
     write_image(results[i].image, dir / (std::to_string(i) + "_" + results[i].method + ".pfm"));
 }
 
-void write_sheet(const std::vector<Result>& results, float exposure, const fs::path& file) {
+// The heat maps' scale goes to stderr too, for whoever reads the run's log.
+void write_sheet(const std::vector<Result>& results, const ToneMap& tone, const fs::path& file) {
   std::vector<SheetEntry> entries;
   for (const auto& r : results)
     entries.push_back({r.method, r.changed, r.note, r.prepare_s + r.render_s, r.error.rel_rmse, &r.image});
-  write_contact_sheet(entries, exposure, file);
+  const HeatScale scale = heat_scale(entries);
+  std::fprintf(stderr, "compare: error maps' %s\n", describe(scale).c_str());
+  write_contact_sheet(entries, scale, tone, file);
 }
 
 void check_outputs(const CompareOptions& o, Size size, const std::vector<Entry>& entries) {
@@ -219,10 +223,11 @@ void compare(const CompareOptions& o) {
       progress.advance();
     }
   }
-  for (auto& r : results) measure(r, results[0].image, o.exposure);
+  const ToneMap tone = o.tone.resolve(results[0].image, "compare");  // auto: measured on the reference
+  for (auto& r : results) measure(r, results[0].image, tone.exposure);
   if (!o.images.empty()) write_images(results, o.images);
   if (!o.csv.empty()) write_csv(results, o.pass, o.csv);
-  write_sheet(results, o.exposure, o.out);
+  write_sheet(results, tone, o.out);
 }
 
 }  // namespace
@@ -244,9 +249,7 @@ Run add_compare_command(CLI::App& cli) {
   command->add_option("--pass", o->pass, "what to compare (docs/design.md §6 measures the airlight)")
       ->check(CLI::IsMember({"airlight", "composite"}))
       ->capture_default_str();
-  command->add_option("--exposure", o->exposure, "tone mapping: radiance is multiplied by this")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  o->tone.add_options(*command);
   command->add_option("--cache", o->cache, "reference cache directory (default $AIRLIGHT_CACHE, else ~/.cache/airlight)");
   return [o] { compare(*o); };
 }

@@ -3,7 +3,11 @@
 #include "app/command_test_support.hpp"
 #include "core/image_io.hpp"
 
+#include <glm/common.hpp>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +83,25 @@ TEST(Compare, WritesSheetAndCsvThatMatchThePfms) {
   EXPECT_NE(rows[4][1].find("steps=8"), std::string::npos) << rows[4][1];
   EXPECT_EQ(rows[1][12], "0");  // rendered now
 
+  // The heat maps' scale, printed: the 99th percentile (nearest rank) of the nonzero
+  // errors, largest over RGB, of every image after the reference.
+  std::vector<double> errors;
+  for (size_t i = 1; i < expected.size(); ++i) {
+    const Image image = read_image(images / expected[i].second);
+    for (size_t p = 0; p < image.pixels.size(); ++p) {
+      const glm::vec3 d = glm::abs(image.pixels[p] - reference.pixels[p]);
+      if (const double e = std::max({d.r, d.g, d.b}); e > 0.0) errors.push_back(e);
+    }
+  }
+  ASSERT_FALSE(errors.empty());
+  std::sort(errors.begin(), errors.end());
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "compare: error maps' scale 0 to %.3g W/(m^2 sr): the 99th percentile of the nonzero errors; larger "
+                "ones, up to %.3g, saturate\n",
+                errors[static_cast<size_t>(std::ceil(0.99 * errors.size())) - 1], errors.back());
+  EXPECT_NE(first.err.find(line), std::string::npos) << first.err;
+
   // The second run reads the reference from the cache: the CSV's `cached` column says so.
   const Outcome second = run(args);
   ASSERT_EQ(second.status, 0) << second.err;
@@ -103,6 +126,7 @@ TEST(Compare, BadArgumentsExitTwoNamingThem) {
   expect_bad_options("--methods raymarch:", "--methods", "raymarch:");
   expect_bad_options("--methods raymarch --size 0x5", "command line", "--size");
   EXPECT_EQ(run("compare --scene " + scene_file().string() + " --out x.png").status, 2);  // --methods is required
+  expect_bad_options("--methods raymarch --exposure 0", "--exposure", "");
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #include "app/contact_sheet.hpp"
 
-#include "core/image_io.hpp"
+#include "core/atomic_file.hpp"
 
 #include <airlight/error.hpp>
 
@@ -64,10 +64,10 @@ SurfacePtr pixel_surface(int w, int h, int scale, const std::function<std::uint3
   return surface;
 }
 
-SurfacePtr tone_mapped(const Image& image, int scale, float exposure) {
+SurfacePtr tone_mapped(const Image& image, int scale, const ToneMap& tone) {
   return pixel_surface(image.width, image.height, scale, [&](int x, int y) {
-    const glm::vec3 p = image.at(x, y) * exposure;
-    return rgb24(linear_to_srgb(p.r), linear_to_srgb(p.g), linear_to_srgb(p.b));
+    const glm::vec3 p = tone_map(image.at(x, y), tone);
+    return rgb24(p.r, p.g, p.b);
   });
 }
 
@@ -81,17 +81,6 @@ SurfacePtr heat_map(const Image& image, const Image& reference, int scale, doubl
     const glm::dvec3 c = inferno(abs_error(image, reference, x, y) / max_error);
     return rgb24(c.r, c.g, c.b);
   });
-}
-
-// The largest error of any entry: one scale for every heat map, so that they
-// compare at a glance; 1 when all are exact, so that the scale stays finite.
-double common_max_error(const std::vector<SheetEntry>& entries) {
-  const Image& reference = *entries[0].image;
-  double max_error = 0.0;
-  for (const auto& e : entries)
-    for (int y = 0; y < reference.height; ++y)
-      for (int x = 0; x < reference.width; ++x) max_error = std::max<double>(max_error, abs_error(*e.image, reference, x, y));
-  return max_error > 0.0 ? max_error : 1.0;
 }
 
 std::string format(const char* pattern, double value) {
@@ -145,13 +134,30 @@ void paint(cairo_t* cr, cairo_surface_t* surface, double x, double y) {
   cairo_paint(cr);
 }
 
-// The heat maps' colour scale, ticks at quarters of `max_error`.
-void draw_colour_bar(cairo_t* cr, double x, double y, double width, double max_error) {
+void set_font(cairo_t* cr) {
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, font_size);
+}
+
+// The colour bar's caption, wrapped to `width`: a sheet of two columns is ~400 px
+// wide, too narrow for the scale's sentence on one line.
+std::vector<std::string> bar_caption(const HeatScale& scale, double width) {
+  SurfacePtr scratch(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1), cairo_surface_destroy);
+  ContextPtr context(cairo_create(scratch.get()), cairo_destroy);
+  set_font(context.get());
+  std::vector<std::string> lines =
+      wrap(context.get(), "error maps: |image - reference|, largest over RGB, W/(m^2 sr), one scale for all", width, 2);
+  for (const auto& line : wrap(context.get(), describe(scale), width, 3)) lines.push_back(line);
+  return lines;
+}
+
+// The heat maps' colour scale under its caption, ticks at quarters of its top,
+// the last one "≥ top".
+void draw_colour_bar(cairo_t* cr, double x, double y, double width, const std::vector<std::string>& caption,
+                     double max_error) {
   cairo_set_source_rgb(cr, 0, 0, 0);
-  text_at(cr, x, y + line_h - 3.0,
-          "error maps: |image - reference|, largest over RGB, W/(m^2 sr), common scale 0 to " +
-              format("%.3g", max_error));
-  const double bar_y = y + line_h;
+  for (size_t i = 0; i < caption.size(); ++i) text_at(cr, x, y + line_h * (i + 1.0) - 3.0, caption[i]);
+  const double bar_y = y + line_h * static_cast<double>(caption.size());
   const SurfacePtr bar = pixel_surface(static_cast<int>(width), bar_h, 1, [&](int i, int) {
     const glm::dvec3 c = inferno(i / (width - 1.0));
     return rgb24(c.r, c.g, c.b);
@@ -160,7 +166,7 @@ void draw_colour_bar(cairo_t* cr, double x, double y, double width, double max_e
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_line_width(cr, 1.0);
   for (int k = 0; k <= 4; ++k) {
-    const std::string tick = format("%.3g", max_error * k / 4.0);
+    const std::string tick = (k == 4 ? "≥ " : "") + format("%.3g", max_error * k / 4.0);
     cairo_text_extents_t extents;
     cairo_text_extents(cr, tick.c_str(), &extents);
     const double tx = x + (width - 1.0) * k / 4.0;
@@ -174,35 +180,58 @@ void draw_colour_bar(cairo_t* cr, double x, double y, double width, double max_e
 
 }  // namespace
 
-void write_contact_sheet(const std::vector<SheetEntry>& entries, float exposure, const std::filesystem::path& file) {
+HeatScale heat_scale(const std::vector<SheetEntry>& entries) {
   const Image& reference = *entries.at(0).image;
-  const int scale = reference.width < 256 ? 2 : 1;  // 128×96 images would be too small to read
-  const int image_w = reference.width * scale, image_h = reference.height * scale;
+  std::vector<double> errors;
+  for (size_t i = 1; i < entries.size(); ++i)
+    for (int y = 0; y < reference.height; ++y)
+      for (int x = 0; x < reference.width; ++x)
+        if (const double e = abs_error(*entries[i].image, reference, x, y); e > 0.0) errors.push_back(e);
+  if (errors.empty()) return {};
+  const size_t rank = static_cast<size_t>(std::ceil(0.99 * static_cast<double>(errors.size())));  // 1-based
+  std::nth_element(errors.begin(), errors.begin() + (rank - 1), errors.end());
+  const double top = errors[rank - 1];
+  return {top, *std::max_element(errors.begin() + (rank - 1), errors.end())};  // the tail holds the largest
+}
+
+std::string describe(const HeatScale& scale) {
+  return "scale 0 to " + format("%.3g", scale.top) +
+         " W/(m^2 sr): the 99th percentile of the nonzero errors; larger ones, up to " +
+         format("%.3g", scale.largest) + ", saturate";
+}
+
+void write_contact_sheet(const std::vector<SheetEntry>& entries, const HeatScale& scale, const ToneMap& tone,
+                         const std::filesystem::path& file) {
+  const Image& reference = *entries.at(0).image;
+  const int zoom = reference.width < 256 ? 2 : 1;  // 128×96 images would be too small to read
+  const int image_w = reference.width * zoom, image_h = reference.height * zoom;
   const int cell_w = std::max(image_w, min_cell_w), label_h = label_lines * line_h + 4;
   const int n = static_cast<int>(entries.size());
   const int sheet_w = margin + n * (cell_w + margin);
   const int heat_y = margin + label_h + image_h + margin, bar_y = heat_y + image_h + margin;
-  const int sheet_h = bar_y + line_h + bar_h + 4 + line_h + margin;
-  const double max_error = common_max_error(entries);
+  const std::vector<std::string> caption = bar_caption(scale, sheet_w - 2 * margin);
+  const int sheet_h = bar_y + static_cast<int>(caption.size()) * line_h + bar_h + 4 + line_h + margin;
 
   SurfacePtr sheet(cairo_image_surface_create(CAIRO_FORMAT_RGB24, sheet_w, sheet_h), cairo_surface_destroy);
   ContextPtr context(cairo_create(sheet.get()), cairo_destroy);
   cairo_t* cr = context.get();
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, font_size);
+  set_font(cr);
   for (int i = 0; i < n; ++i) {
     const SheetEntry& e = entries[i];
     const double x = margin + i * (cell_w + margin), image_x = x + (cell_w - image_w) / 2;
     draw_label(cr, e, x, margin, cell_w);
-    paint(cr, tone_mapped(*e.image, scale, exposure).get(), image_x, margin + label_h);
-    paint(cr, heat_map(*e.image, reference, scale, max_error).get(), image_x, heat_y);
+    paint(cr, tone_mapped(*e.image, zoom, tone).get(), image_x, margin + label_h);
+    paint(cr, heat_map(*e.image, reference, zoom, scale.top).get(), image_x, heat_y);
   }
-  draw_colour_bar(cr, margin, bar_y, sheet_w - 2 * margin, max_error);
+  draw_colour_bar(cr, margin, bar_y, sheet_w - 2 * margin, caption, scale.top);
   cairo_surface_flush(sheet.get());
-  if (const cairo_status_t status = cairo_surface_write_to_png(sheet.get(), file.c_str()); status != CAIRO_STATUS_SUCCESS)
-    throw Failure("cannot write " + file.string() + ": " + cairo_status_to_string(status));
+  write_atomically(file, [&](const std::filesystem::path& temp) {
+    if (const cairo_status_t status = cairo_surface_write_to_png(sheet.get(), temp.c_str());
+        status != CAIRO_STATUS_SUCCESS)
+      throw Failure("cannot write " + temp.string() + ": " + cairo_status_to_string(status));
+  });
 }
 
 }  // namespace airlight::app

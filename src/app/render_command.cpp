@@ -3,6 +3,7 @@
 #include "app/method_settings.hpp"
 #include "app/output_check.hpp"
 #include "app/scene_source.hpp"
+#include "app/tone_options.hpp"
 #include "core/atomic_file.hpp"
 #include "core/image_io.hpp"
 #include "gpu/program.hpp"
@@ -26,7 +27,7 @@ struct RenderOptions {
   SceneSource scene;
   std::string method = "reference", size = "256x192", pass = "composite", out, report;
   std::vector<std::string> assignments;
-  float exposure = 1.0f;
+  ToneOptions tone;
   int threads = 0;  // 0: all cores
 };
 
@@ -55,7 +56,7 @@ nlohmann::json image_stats(const Image& image, const std::string& method) {
 }
 
 void write_report(const RenderOptions& o, const Scene& scene, const Settings& settings, const FrameImages& frame,
-                  const nlohmann::json& output, double prepare_s, double render_s) {
+                  const nlohmann::json& output, const ToneMap& tone, double prepare_s, double render_s) {
   nlohmann::json passes = nlohmann::json::array(), stats = nlohmann::json::object();
   for (const auto& t : frame.times) passes.push_back({{"pass", t.pass}, {"seconds", t.seconds}});
   for (const auto& [name, value] : frame.stats) stats[name] = value;
@@ -67,6 +68,7 @@ void write_report(const RenderOptions& o, const Scene& scene, const Settings& se
       {"pass", o.pass},
       {"timings", {{"prepare_s", prepare_s}, {"render_s", render_s}, {"readback_s", frame.readback_s}, {"passes", passes}}},
       {"output", output},
+      {"tonemap", {{"curve", tone_curve_name(tone.curve)}, {"exposure", tone.exposure}, {"auto", !o.tone.exposure}}},
       {"stats", stats},
       {"programs_compiled", gpu::cached_program_count()},
       {"peak_rss_mib", peak_rss_mib()}};
@@ -93,8 +95,9 @@ void render(const RenderOptions& o) {
   const double render_s = seconds_since(start);
   const Image image = select_pass(frame, pass);
   const nlohmann::json output = image_stats(image, o.method);
-  write_image(image, o.out, ToneMap{o.exposure});
-  if (!o.report.empty()) write_report(o, scene, settings, frame, output, prepare_s, render_s);
+  const ToneMap tone = o.tone.resolve(image, "render");
+  write_image(image, o.out, tone);
+  if (!o.report.empty()) write_report(o, scene, settings, frame, output, tone, prepare_s, render_s);
 }
 
 }  // namespace
@@ -110,10 +113,9 @@ Run add_render_command(CLI::App& cli) {
       ->check(CLI::IsMember({"composite", "airlight", "surface"}))
       ->capture_default_str();
   command->add_option("--out", o->out, "output image: .png (tone-mapped), .pfm or .exr (linear)")->required();
-  command->add_option("--report", o->report, "JSON report: scene, method, settings, size, timings, output range");
-  command->add_option("--exposure", o->exposure, "PNG exposure: radiance is multiplied by this")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  command->add_option("--report", o->report,
+                      "JSON report: scene, method, settings, size, timings, output range, PNG tone map");
+  o->tone.add_options(*command);
   command->add_option("--threads", o->threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 1024));
   return [o] { render(*o); };
 }

@@ -26,9 +26,13 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
   std::error_code ec;
   try {
     write(temp);
-  } catch (const Failure&) {
+  } catch (const Failure& e) {
     fs::remove(temp, ec);
-    throw Failure("cannot write " + target.string());  // the writer's message names the temporary file
+    // The writer's message names the temporary file; the user knows the target.
+    std::string what = e.what();
+    for (size_t at; (at = what.find(temp.string())) != std::string::npos;)
+      what.replace(at, temp.string().size(), target.string());
+    throw Failure(what);
   } catch (...) {
     fs::remove(temp, ec);
     throw;

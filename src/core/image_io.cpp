@@ -55,10 +55,10 @@ float finite(float v) {
 
 void write_png(const Image& image, const fs::path& file, const ToneMap& tone) {
   std::vector<std::uint8_t> bytes(image.pixels.size() * 3);
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      bytes[3 * i + c] = static_cast<std::uint8_t>(
-          std::lround(255.0f * linear_to_srgb(finite(image.pixels[i][c]) * tone.exposure)));
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    const glm::vec3 encoded = tone_map(image.pixels[i], tone);  // finite, in [0, 1]
+    for (int c = 0; c < 3; ++c) bytes[3 * i + c] = static_cast<std::uint8_t>(std::lround(255.0f * encoded[c]));
+  }
   if (!stbi_write_png(file.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3))
     throw Failure("cannot write " + file.string());
 }

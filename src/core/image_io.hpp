@@ -1,16 +1,14 @@
 #pragma once
 // Image files: PNG (8-bit sRGB), PFM and EXR (linear float). docs/design.md §5: PFM is
 // bottom row first on disk; Image is always top row first in memory.
+#include "core/tonemap.hpp"
+
 #include <airlight/image.hpp>
 #include <filesystem>
 
 namespace airlight {
 
-struct ToneMap {
-  float exposure = 1.0f;  // linear radiance is multiplied by this before sRGB encoding
-};
-
-// Writes by extension: .png (tone-mapped), .pfm, .exr (linear). Throws InputError
+// Writes by extension: .png (tone-mapped by `tone`), .pfm, .exr (linear). Throws InputError
 // for an unknown extension, Failure when the file cannot be written.
 void write_image(const Image& image, const std::filesystem::path& file, const ToneMap& tone = {});
 

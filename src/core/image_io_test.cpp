@@ -58,7 +58,7 @@ TEST(ImageIo, PngRoundTripsWithinOneSrgbStep) {
   image.at(1, 0) = glm::vec3(0.214f);  // ≈ sRGB 0.5
   image.at(2, 0) = glm::vec3(5.0f);    // over-exposed: clamps to 1
   const fs::path file = temp_file("t.png");
-  write_image(image, file);
+  write_image(image, file, ToneMap{1.0f, ToneCurve::clamp});  // radiance as sRGB, no curve
   const Image back = read_image(file);
   // 8-bit sRGB: half a code step at 0.5 is ≈ 0.002 in linear terms.
   EXPECT_NEAR(back.at(1, 0).r, 0.214f, 0.003f);
@@ -69,7 +69,7 @@ TEST(ImageIo, PngRoundTripsWithinOneSrgbStep) {
 TEST(ImageIo, ExposureScalesBeforeEncoding) {
   Image image(1, 1, glm::vec3(0.1f));
   const fs::path file = temp_file("e.png");
-  write_image(image, file, ToneMap{2.0f});
+  write_image(image, file, ToneMap{2.0f, ToneCurve::clamp});
   EXPECT_NEAR(read_image(file).at(0, 0).r, 0.2f, 0.003f);  // one 8-bit sRGB step near 0.2
 }
 

@@ -242,7 +242,7 @@ TEST(SceneJson, PngGoboOnABeamIsDecodedToLinear) {
   Image image(2, 1);
   image.at(0, 0) = glm::vec3(linear(255), linear(128), linear(10));  // written back as exactly these bytes
   image.at(1, 0) = glm::vec3(linear(0), linear(10), linear(128));
-  write_image(image, dir / "window.png");
+  write_image(image, dir / "window.png", ToneMap{1.0f, ToneCurve::clamp});
   Json j = valid_scene();
   j["objects"] = Json::array();
   j["lights"][2]["beam"] = Json::parse(R"({"origin": [0, 6, 0], "size": [2, 1], "length": 10})");
