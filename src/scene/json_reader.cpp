@@ -106,6 +106,19 @@ Json parse_json_text(const std::string& text, const std::string& file) {
   };
   try {
     return Json::parse(text, track);
+  } catch (const Json::out_of_range& e) {
+    // The lexer's "number overflow parsing '1e999'": a finite number beyond double range,
+    // so beyond float range, as JsonNode::number says of one within double range.
+    const std::string what = e.what();
+    const auto open = what.find('\''), close = what.rfind('\'');
+    if (e.id != 406 || open == std::string::npos || close <= open + 1) {
+      throw InputError(file, path.text(), "malformed JSON: " + strip_exception_id(what));
+    }
+    const std::string number = what.substr(open + 1, close - open - 1);
+    throw InputError(file, path.text(),
+                     (number[0] == '-' ? "too small, at least " + number_text(-FLT_MAX)
+                                       : "too large, at most " + number_text(FLT_MAX)) +
+                         ", got " + number);
   } catch (const Json::exception& e) {
     throw InputError(file, path.text(), "malformed JSON: " + strip_exception_id(e.what()));
   }
