@@ -15,9 +15,10 @@ public:
   InputError(std::string file, std::string key, const std::string& message);
   const std::string& file() const { return file_; }
   const std::string& key() const { return key_; }
+  const std::string& message() const { return message_; }
 
 private:
-  std::string file_, key_;
+  std::string file_, key_, message_;
 };
 
 // Any other failure: no OpenGL context, an I/O error on output, an internal limit.

@@ -117,7 +117,8 @@ Scene load_scene(const std::filesystem::path& file);
 // Parses scene JSON text; `file` names it in messages and anchors relative paths.
 Scene parse_scene(const std::string& json_text, const std::filesystem::path& file);
 
-// Built-in scenes (docs/design.md §4). Throws InputError for an unknown name.
+// Built-in scenes (docs/design.md §4). Throws InputError("--builtin", name) for an
+// unknown name, listing the known ones.
 Scene builtin_scene(const std::string& name);
 std::vector<std::string> builtin_scene_names();
 // One line on what a built-in scene shows and which document it comes from.

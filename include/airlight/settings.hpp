@@ -18,6 +18,10 @@ struct SettingSpec {
   std::string help;
 };
 
+// The values a setting takes and its default: "integer in [1, 4096], default 64",
+// "one of: white, blue; default blue", "true or false, default false".
+std::string describe_values(const SettingSpec& spec);
+
 class Settings {
 public:
   Settings() = default;

@@ -2,17 +2,29 @@
 
 #include <airlight/method.hpp>
 #include <airlight/scene.hpp>
+#include <airlight/settings.hpp>
 
+#include <algorithm>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 
 namespace airlight::app {
 
 namespace {
+// Each method, then its settings in columns aligned within the method:
+//     steps     (integer in [1, 4096], default 64)  samples per ray ...
 void list_methods() {
   for (const auto& m : registered_methods()) {
     std::cout << m.name << "\t" << m.source << "\t" << m.description << "\n";
-    for (const auto& s : m.settings) std::cout << "    " << s.name << "\t" << s.help << "\n";
+    size_t name_width = 0, values_width = 0;
+    for (const auto& s : m.settings) {
+      name_width = std::max(name_width, s.name.size());
+      values_width = std::max(values_width, describe_values(s).size() + 2);
+    }
+    for (const auto& s : m.settings)
+      std::cout << "    " << std::left << std::setw(int(name_width)) << s.name << "  " << std::setw(int(values_width))
+                << "(" + describe_values(s) + ")" << "  " << s.help << "\n";
   }
 }
 }  // namespace

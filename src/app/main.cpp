@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <map>
+#include <string>
 
 namespace {
 
@@ -22,7 +23,17 @@ int run(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return cli.exit(e);  // --help
   } catch (const CLI::ParseError& e) {
-    cli.exit(e);  // prints the message and usage
+    // Bad input in the one form every error has, then where the usage is. CLI11 checks
+    // required options before unknown ones, but a misspelt option is the likelier cause
+    // ("--ot x.pfm" is not "--out is required").
+    std::string message = e.what();
+    if (const auto extras = cli.remaining(true); !extras.empty()) {
+      message = extras.size() == 1 ? "unknown argument:" : "unknown arguments:";
+      for (const auto& extra : extras) message += " " + extra;
+    }
+    const auto chosen = cli.get_subcommands();
+    const std::string command = chosen.empty() ? "airlight" : "airlight " + chosen.front()->get_name();
+    std::fprintf(stderr, "airlight: error: %s\nrun '%s --help' for usage\n", message.c_str(), command.c_str());
     return airlight::exit_bad_input;
   }
   for (const auto* chosen : cli.get_subcommands()) commands.at(chosen->get_name())();

@@ -11,6 +11,7 @@ std::string describe(const std::string& file, const std::string& key, const std:
 }  // namespace
 
 InputError::InputError(std::string file, std::string key, const std::string& message)
-    : std::runtime_error(describe(file, key, message)), file_(std::move(file)), key_(std::move(key)) {}
+    : std::runtime_error(describe(file, key, message)), file_(std::move(file)), key_(std::move(key)),
+      message_(message) {}
 
 }  // namespace airlight

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace airlight {
@@ -102,10 +103,23 @@ Image read_pfm(const fs::path& file) {
   return image;
 }
 
+// stb_image's failure reason in plain words; the rarer ones, all some damage to
+// the PNG data, keep stb's code for whoever digs further.
+std::string png_failure(const std::string& reason) {
+  static const std::map<std::string, std::string> plain = {
+      {"unknown image type", "not a PNG image (the file is damaged or another format)"},
+      {"outofdata", "the file is cut short"},
+      {"can't fopen", "cannot open the file"},
+      {"outofmem", "not enough memory to decode it"},
+      {"too large", "the image is too large to decode"}};
+  const auto it = plain.find(reason);
+  return it != plain.end() ? it->second : "the PNG data is damaged (stb_image: " + reason + ")";
+}
+
 Image read_png(const fs::path& file) {
   int width = 0, height = 0, channels = 0;
   std::uint8_t* data = stbi_load(file.c_str(), &width, &height, &channels, 3);
-  if (!data) unreadable(file, std::string("cannot read PNG: ") + stbi_failure_reason());
+  if (!data) unreadable(file, png_failure(stbi_failure_reason()));
   Image image(width, height);
   for (size_t i = 0; i < image.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c) image.pixels[i][c] = srgb_to_linear(data[3 * i + c] / 255.0f);

@@ -109,7 +109,7 @@ TEST(ImageIo, BadFilesAreInputErrorsNamingTheFile) {
   expect_input_error(short_pfm, "ends early");
   const fs::path bad_png = temp_file("bad.png");
   std::ofstream(bad_png) << "not a png";
-  expect_input_error(bad_png, "cannot read PNG");
+  expect_input_error(bad_png, "not a PNG image (the file is damaged or another format)");
   const fs::path bad_ext = temp_file("x.bmp");
   std::ofstream(bad_ext) << "x";
   expect_input_error(bad_ext, "unknown image format");

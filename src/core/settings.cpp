@@ -28,17 +28,18 @@ std::string known_keys(const std::vector<SettingSpec>& specs) {
   return keys.empty() ? "none" : keys;
 }
 
-double parse_number(const std::string& text, bool* ok) {
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  *ok = ec == std::errc() && end == text.data() + text.size() && std::isfinite(value);
-  return value;
+std::string number_text(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
 }
 
-std::string range_text(const SettingSpec& s) {
-  std::ostringstream out;
-  out << "[" << s.min << ", " << s.max << "]";
-  return out.str();
+std::string range_text(const SettingSpec& s) { return "[" + number_text(s.min) + ", " + number_text(s.max) + "]"; }
+
+std::string choices_text(const SettingSpec& s) {
+  std::string all;
+  for (const auto& c : s.choices) all += (all.empty() ? "" : ", ") + c;
+  return all;
 }
 
 // The value of `text` for `s`, or a message saying what is wrong.
@@ -53,22 +54,35 @@ double parse_value(const SettingSpec& s, const std::string& text, std::string* e
   if (s.type == Type::choice) {
     const auto it = std::find(s.choices.begin(), s.choices.end(), text);
     if (it != s.choices.end()) return static_cast<double>(it - s.choices.begin());
-    std::string all;
-    for (const auto& c : s.choices) all += (all.empty() ? "" : ", ") + c;
-    *error = "expected one of " + all + ", got '" + text + "'";
+    *error = "expected one of " + choices_text(s) + ", got '" + text + "'";
     return 0.0;
   }
-  bool ok = false;
-  const double value = parse_number(text, &ok);
-  if (!ok || (s.type == Type::integer && value != std::floor(value)))
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  // Beyond double range ("1e999") is a number, and out of any range a setting has.
+  const bool beyond = ec == std::errc::result_out_of_range;
+  const bool number = ec != std::errc::invalid_argument && end == text.data() + text.size() &&
+                      (beyond || std::isfinite(value));
+  if (!number || (!beyond && s.type == Type::integer && value != std::floor(value)))
     *error = std::string("expected ") + (s.type == Type::integer ? "an integer" : "a finite number") +
              ", got '" + text + "'";
-  else if (value < s.min || value > s.max)
-    *error = "value " + text + " is outside " + range_text(s);
+  else if (beyond || value < s.min || value > s.max)
+    *error = "must be in " + range_text(s) + ", got " + text;
   return value;
 }
 
 }  // namespace
+
+std::string describe_values(const SettingSpec& s) {
+  switch (s.type) {
+    case SettingSpec::Type::real: return "number in " + range_text(s) + ", default " + number_text(s.default_value);
+    case SettingSpec::Type::integer: return "integer in " + range_text(s) + ", default " + number_text(s.default_value);
+    case SettingSpec::Type::boolean: return std::string("true or false, default ") + (s.default_value != 0.0 ? "true" : "false");
+    case SettingSpec::Type::choice:
+      return "one of: " + choices_text(s) + "; default " + s.choices.at(static_cast<size_t>(s.default_value));
+  }
+  return "";
+}
 
 void Settings::set(const std::string& assignment, const std::string& source) {
   const auto eq = assignment.find('=');

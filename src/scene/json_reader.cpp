@@ -1,9 +1,12 @@
 #include "scene/json_reader.hpp"
 
 #include <airlight/error.hpp>
+#include <algorithm>
 #include <cfloat>
+#include <charconv>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -17,6 +20,18 @@ std::string strip_exception_id(const std::string& what) {
   return (what.rfind("[json.exception.", 0) == 0 && end != std::string::npos)
              ? what.substr(end + 2)
              : what;
+}
+
+// A value the file gave, as messages quote it: exactly ("0.99999999999", "1e+300").
+std::string value_text(double x) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, x).ptr);
+}
+
+std::string list_text(std::span<const std::string> names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
 }
 
 }  // namespace
@@ -91,6 +106,19 @@ Json parse_json_text(const std::string& text, const std::string& file) {
   };
   try {
     return Json::parse(text, track);
+  } catch (const Json::out_of_range& e) {
+    // The lexer's "number overflow parsing '1e999'": a finite number beyond double range,
+    // so beyond float range, as JsonNode::number says of one within double range.
+    const std::string what = e.what();
+    const auto open = what.find('\''), close = what.rfind('\'');
+    if (e.id != 406 || open == std::string::npos || close <= open + 1) {
+      throw InputError(file, path.text(), "malformed JSON: " + strip_exception_id(what));
+    }
+    const std::string number = what.substr(open + 1, close - open - 1);
+    throw InputError(file, path.text(),
+                     (number[0] == '-' ? "too small, at least " + number_text(-FLT_MAX)
+                                       : "too large, at most " + number_text(FLT_MAX)) +
+                         ", got " + number);
   } catch (const Json::exception& e) {
     throw InputError(file, path.text(), "malformed JSON: " + strip_exception_id(e.what()));
   }
@@ -122,18 +150,22 @@ void JsonNode::fail(const std::string& message) const { throw InputError(file(),
 
 float JsonNode::number(const Interval& allowed) const {
   if (!value_->is_number()) fail(std::string("must be a number, not ") + value_->type_name());
-  // Checked as the float it is stored as: beyond float range is not finite,
-  // and rounding must not carry a value onto an open bound (g = 0.9999999999).
   const double x = value_->get<double>();
-  if (!(std::fabs(x) <= FLT_MAX)) fail("must be a finite number");  // also NaN
+  const std::string got = ", got " + value_text(x);
+  if (!std::isfinite(x)) fail("must be a finite number" + got);  // a lexer overflow
+  if (!allowed.contains(x)) fail("must be " + allowed.describe() + got);
+  // Stored as a float: beyond its range is too large, and rounding must not
+  // carry a value onto an open bound (g = 0.9999999999).
+  if (x > FLT_MAX) fail("too large, at most " + number_text(FLT_MAX) + got);
+  if (x < -FLT_MAX) fail("too small, at least " + number_text(-FLT_MAX) + got);
   const float f = static_cast<float>(x);
-  if (!allowed.contains(f)) fail("must be " + allowed.describe());
+  if (!allowed.contains(f)) fail("must be " + allowed.describe() + got + ", which is " + value_text(f) + " as a float");
   return f;
 }
 
 int JsonNode::integer(int lo, int hi) const {
   const float x = number(closed(lo, hi));
-  if (x != std::floor(x)) fail("must be a whole number");
+  if (x != std::floor(x)) fail("must be a whole number, got " + value_text(value_->get<double>()));
   return static_cast<int>(x);
 }
 
@@ -203,21 +235,37 @@ JsonObject::JsonObject(const JsonNode& node) : node_(node) {
 
 bool JsonObject::has(std::string_view name) const { return node_.json().contains(name); }
 
+void JsonObject::offer(std::string_view name) {
+  if (std::find(offered_.begin(), offered_.end(), name) == offered_.end()) offered_.emplace_back(name);
+}
+
 JsonNode JsonObject::required(std::string_view name) {
+  offer(name);
   if (!has(name)) fail(name, "is required");
-  asked_.emplace(name);
   return JsonNode(node_.json().find(name).value(), node_.file(), node_.member_key(name));
 }
 
+void JsonObject::check_present(std::span<const std::string_view> names) {
+  std::vector<std::string> missing;
+  for (const std::string_view name : names) {
+    offer(name);
+    if (!has(name)) missing.emplace_back(name);
+  }
+  if (missing.size() == 1) fail(missing[0], "is required");
+  if (!missing.empty()) node_.fail("missing required keys: " + list_text(missing));
+}
+
 std::optional<JsonNode> JsonObject::optional(std::string_view name) {
+  offer(name);
   if (!has(name)) return std::nullopt;
   return required(name);
 }
 
 void JsonObject::finish() const {
   for (const auto& item : node_.json().items()) {
-    if (!asked_.contains(item.key())) {
-      throw InputError(node_.file(), node_.member_key(item.key()), "unknown key");
+    if (std::find(offered_.begin(), offered_.end(), item.key()) == offered_.end()) {
+      throw InputError(node_.file(), node_.member_key(item.key()),
+                       "unknown key (known here: " + list_text(offered_) + ")");
     }
   }
 }

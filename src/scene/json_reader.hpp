@@ -6,11 +6,13 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
+#include <array>
 #include <limits>
 #include <optional>
-#include <set>
+#include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace airlight::scene_json {
@@ -73,6 +75,9 @@ private:
 
 // A JSON object whose members are each asked for by name; finish() rejects any
 // member nobody asked for, so misspelt keys are errors, not silently ignored.
+// The names asked for by required() and optional() (present or not) are the
+// keys valid at that place, which the unknown-key message lists; has() only
+// looks, so a key it tests is not thereby valid.
 class JsonObject {
 public:
   explicit JsonObject(const JsonNode& node);
@@ -80,6 +85,14 @@ public:
   const JsonNode& node() const { return node_; }
   bool has(std::string_view name) const;
   JsonNode required(std::string_view name);
+  // Several required members, all the missing ones named in one message.
+  template <size_t N>
+  std::array<JsonNode, N> required_all(const std::string_view (&names)[N]) {
+    check_present(names);
+    return [&]<size_t... I>(std::index_sequence<I...>) {
+      return std::array<JsonNode, N>{required(names[I])...};
+    }(std::make_index_sequence<N>{});
+  }
   std::optional<JsonNode> optional(std::string_view name);
   void finish() const;
   // Fails at the member `name`, present or not (for conditions between members).
@@ -93,8 +106,11 @@ public:
   bool boolean_or(std::string_view name, bool fallback);
 
 private:
+  void offer(std::string_view name);
+  void check_present(std::span<const std::string_view> names);
+
   JsonNode node_;
-  std::set<std::string, std::less<>> asked_;
+  std::vector<std::string> offered_;  // in the order asked, for the message
 };
 
 }  // namespace airlight::scene_json

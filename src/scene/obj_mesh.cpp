@@ -1,8 +1,14 @@
+#include "core/solid.hpp"
+#include "core/warning.hpp"
+#include "scene/json_reader.hpp"
 #include "scene/mesh_build.hpp"
 #include "scene/shapes.hpp"
 
 #include <airlight/error.hpp>
 #include <algorithm>
+#include <array>
+#include <cfloat>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <glm/geometric.hpp>
@@ -23,13 +29,14 @@ public:
         position_count_(static_cast<int>(attrib.vertices.size() / 3)),
         normal_count_(static_cast<int>(attrib.normals.size() / 3)) {}
 
+  // tinyobjloader reads a coordinate beyond float range ("1e999") as infinite.
   void check_positions() const {
     for (int i = 0; i < position_count_; ++i) {
       const glm::dvec3 p = position(i);
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
-          glm::length(glm::abs(p)) > 1e30) {
-        fail("vertex " + std::to_string(i + 1), "has a non-finite coordinate");
-      }
+      const std::string key = "vertex " + std::to_string(i + 1);
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        fail(key, "has a coordinate beyond float range (larger than " + scene_json::number_text(FLT_MAX) + ")");
+      if (glm::length(p) > 1e30) fail(key, "is too far from the origin (more than 1e+30)");
     }
   }
 
@@ -40,9 +47,11 @@ public:
     for (const Corner& c : corners) check_corner(c, key);
     for (size_t k = 1; k + 1 < corners.size(); ++k) {
       const Corner tri[3] = {corners[0], corners[k], corners[k + 1]};
-      if (is_degenerate(glm::vec3(position(tri[0].first)), glm::vec3(position(tri[1].first)),
-                        glm::vec3(position(tri[2].first)))) {
-        fail(key, "has zero area (a degenerate triangle)");
+      const std::array<glm::vec3, 3> p = {glm::vec3(position(tri[0].first)), glm::vec3(position(tri[1].first)),
+                                          glm::vec3(position(tri[2].first))};
+      if (is_degenerate(p[0], p[1], p[2])) {
+        skipped_.push_back({face_number, p});
+        continue;
       }
       mesh_.triangles.emplace_back(index(tri[0]), index(tri[1]), index(tri[2]));
       add_to_smooth_normals(tri);
@@ -51,6 +60,11 @@ public:
 
   Mesh finish(std::string name) {
     if (mesh_.triangles.empty()) fail("", "has no faces");
+    check_skipping_keeps_closed();
+    if (!skipped_.empty()) {
+      const size_t n = skipped_.size();
+      warn(file_, "skipped " + std::to_string(n) + " degenerate triangle" + (n == 1 ? "" : "s") + " (zero area)");
+    }
     mesh_.normals.resize(mesh_.positions.size());
     for (const auto& [corner, i] : indices_) mesh_.normals[i] = vertex_normal(corner);
     mesh_.name = std::move(name);
@@ -60,6 +74,29 @@ public:
 private:
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {
     throw InputError(file_, key, message);
+  }
+
+  // A zero-area triangle with a repeated corner joins nothing once welded by position, but
+  // one with three distinct corners in a line can close a surface: the faces beside a
+  // T-junction meet its three edges. Skipping that one would open the surface, so the file
+  // is refused instead, saying how to mend it.
+  void check_skipping_keeps_closed() const {
+    if (skipped_.empty() || solid::closed(mesh_.positions, mesh_.triangles)) return;
+    std::vector<glm::vec3> positions = mesh_.positions;
+    std::vector<glm::uvec3> triangles = mesh_.triangles;
+    for (const Skipped& s : skipped_) {
+      const auto first = static_cast<uint32_t>(positions.size());
+      positions.insert(positions.end(), s.corners.begin(), s.corners.end());
+      triangles.emplace_back(first, first + 1, first + 2);
+    }
+    if (!solid::closed(positions, triangles)) return;
+    for (const Skipped& s : skipped_) {
+      const auto& c = s.corners;
+      if (c[0] != c[1] && c[1] != c[2] && c[2] != c[0])
+        fail("face " + std::to_string(s.face),
+             "has zero area (its corners lie on a line) but closes the surface, which skipping it would "
+             "open; split the face across its longest edge at its middle corner instead");
+    }
   }
 
   glm::dvec3 position(int i) const {
@@ -110,13 +147,43 @@ private:
     glm::dvec3 sum, first;  // first: the unit normal of the first face
   };
 
+  struct Skipped {
+    size_t face;
+    std::array<glm::vec3, 3> corners;
+  };
+
   const tinyobj::attrib_t& attrib_;
   std::string file_;
   int position_count_, normal_count_;
   Mesh mesh_;
   std::map<Corner, uint32_t> indices_;
   std::map<int, SmoothNormal> smooth_;
+  std::vector<Skipped> skipped_;  // zero-area triangles, left out with a warning
 };
+
+// tinyobjloader reads "nan", "inf" and words that are not numbers as 0 and a
+// missing coordinate as 0: the text says what was written.
+void check_vertex_text(const std::string& text, const std::string& file) {
+  std::istringstream lines(text);
+  int vertex = 0;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string tag;
+    if (!(words >> tag) || tag != "v") continue;
+    const std::string key = "vertex " + std::to_string(++vertex);
+    int count = 0;
+    for (std::string word; count < 3 && words >> word; ++count) {
+      double x = 0.0;
+      const char* end = word.data() + word.size();
+      const auto [stop, ec] = std::from_chars(word.data() + (word[0] == '+'), end, x);
+      if (ec == std::errc::invalid_argument || stop != end)
+        throw InputError(file, key, "has a coordinate that is not a number ('" + word + "')");
+      if (ec == std::errc() && !std::isfinite(x))
+        throw InputError(file, key, "has a non-finite coordinate (" + word + ")");
+    }
+    if (count < 3) throw InputError(file, key, "has fewer than 3 coordinates");
+  }
+}
 
 std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -134,7 +201,9 @@ Mesh load_obj(const std::filesystem::path& file) {
   config.vertex_color = false;
   tinyobj::ObjReader reader;
   // From a string with no material text: materials play no part here.
-  if (!reader.ParseFromString(read_text(file), "", config)) {
+  const std::string text = read_text(file);
+  check_vertex_text(text, file.string());
+  if (!reader.ParseFromString(text, "", config)) {
     throw InputError(file.string(), "", "malformed OBJ: " + reader.Error());
   }
   ObjBuilder builder(reader.GetAttrib(), file.string());

@@ -1,7 +1,12 @@
+#include "core/solid.hpp"
+#include "core/warning.hpp"
 #include "scene/shapes.hpp"
 #include "scene/test_support.hpp"
 
+#include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <sstream>
 
 namespace airlight {
 namespace {
@@ -12,6 +17,33 @@ using scene_test::misoriented_fraction;
 using scene_test::signed_volume;
 using scene_test::throws_input_error;
 using scene_test::well_formed;
+
+std::filesystem::path write_obj(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "airlight_obj_mesh_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+// The mesh's positions and triangles as OBJ text: "v" lines, then "f" lines.
+std::string obj_text(const Mesh& mesh) {
+  std::ostringstream text;
+  for (const glm::vec3& p : mesh.positions) text << "v " << p.x << " " << p.y << " " << p.z << "\n";
+  for (const glm::uvec3& t : mesh.triangles) text << "f " << t.x + 1 << " " << t.y + 1 << " " << t.z + 1 << "\n";
+  return text.str();
+}
+
+// What warnings a load writes, instead of stderr.
+class Warnings {
+public:
+  Warnings() : previous_(set_warning_stream(&text_)) {}
+  ~Warnings() { set_warning_stream(previous_); }
+  std::string text() const { return text_.str(); }
+
+private:
+  std::ostringstream text_;
+  std::ostream* previous_;
+};
 
 TEST(ObjMesh, LoadsQuadsAsTrianglesWithSmoothNormals) {
   const Mesh cube = load_obj(data_dir() / "cube.obj");
@@ -35,14 +67,82 @@ TEST(ObjMesh, KeepsTheFilesNormalsNormalized) {
   for (const glm::vec3& n : square.normals) EXPECT_EQ(n, glm::vec3(0, 1, 0));
 }
 
-TEST(ObjMesh, DegenerateTriangleNamesTheFileAndFace) {
+TEST(ObjMesh, DegenerateTriangleIsSkippedWithAWarning) {
   const auto file = data_dir() / "degenerate.obj";
-  EXPECT_TRUE(throws_input_error([&] { load_obj(file); }, file.string(), "face 2"));
+  const Warnings warnings;
+  const Mesh mesh = load_obj(file);
+  EXPECT_TRUE(well_formed(mesh));
+  EXPECT_EQ(mesh.triangles.size(), 1u);
+  EXPECT_EQ(warnings.text(), "airlight: warning: " + file.string() + ": skipped 1 degenerate triangle (zero area)\n");
 }
+
+// Triangles with a repeated corner (by index or by position) join nothing once welded:
+// skipping them keeps a closed box closed.
+TEST(ObjMesh, SkippingSliversKeepsAClosedMeshClosed) {
+  const Mesh box = make_box(glm::vec3(0.0f), glm::vec3(1.0f, 2.0f, 3.0f));
+  ASSERT_TRUE(solid::closed(box.positions, box.triangles));
+  const size_t n = box.positions.size();
+  const glm::vec3 p = box.positions[0];
+  const std::string slivers = "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) +
+                              "\nf 1 " + std::to_string(n + 1) + " 2\nf 3 3 4\n";
+  const auto file = write_obj("box_slivers.obj", obj_text(box) + slivers);
+  const Warnings warnings;
+  const Mesh mesh = load_obj(file);
+  EXPECT_TRUE(well_formed(mesh));
+  EXPECT_EQ(mesh.triangles.size(), box.triangles.size());
+  EXPECT_TRUE(solid::closed(mesh.positions, mesh.triangles));
+  EXPECT_EQ(warnings.text(), "airlight: warning: " + file.string() + ": skipped 2 degenerate triangles (zero area)\n");
+}
+
+// A tetrahedron whose bottom face is split at the middle of edge 1-2 (vertex 5) while the
+// side face 1 2 4 is not: face 6, three distinct corners in a line, closes the T-junction.
+TEST(ObjMesh, ADegenerateTriangleThatClosesTheSurfaceIsAnError) {
+  const auto file = write_obj("t_junction.obj",
+                              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0.5 0 0\n"
+                              "f 1 2 4\nf 2 3 4\nf 3 1 4\nf 2 5 3\nf 5 1 3\nf 1 5 2\n");
+  EXPECT_TRUE(throws_input_error([&] { load_obj(file); }, file.string(), "face 6",
+                                 "has zero area (its corners lie on a line) but closes the surface, which skipping "
+                                 "it would open; split the face across its longest edge at its middle corner instead"));
+}
+
+TEST(ObjMesh, OnlyDegenerateTrianglesIsNoFaces) {
+  const auto file = write_obj("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n");
+  EXPECT_TRUE(throws_input_error([&] { load_obj(file); }, file.string(), "", "has no faces"));
+}
+
+// A vertex line tinyobjloader would misread (as 0 or as infinity) and what the error says.
+struct BadVertex {
+  const char* name;
+  const char* line;
+  const char* message;
+};
+
+void PrintTo(const BadVertex& c, std::ostream* out) { *out << c.name; }
+
+class BadObjVertex : public ::testing::TestWithParam<BadVertex> {};
+
+TEST_P(BadObjVertex, NamesTheVertexAndWhatIsWrong) {
+  const BadVertex& c = GetParam();
+  const auto file = write_obj(std::string(c.name) + ".obj", "v 0 0 0\nv 1 0 0\n" + std::string(c.line) + "\nf 1 2 3\n");
+  EXPECT_TRUE(throws_input_error([&] { load_obj(file); }, file.string(), "vertex 3", c.message));
+}
+
+const BadVertex kBadVertices[] = {
+    {"Nan", "v nan 0 0", "has a non-finite coordinate (nan)"},
+    {"Infinity", "v 0 -inf 1", "has a non-finite coordinate (-inf)"},
+    {"Word", "v 0 1 abc", "has a coordinate that is not a number ('abc')"},
+    {"BeyondDouble", "v 1e999 0 1", "has a coordinate beyond float range (larger than 3.40282e+38)"},
+    {"BeyondFloat", "v 0 1e39 1", "has a coordinate beyond float range (larger than 3.40282e+38)"},
+    {"TooFar", "v 0 1e31 1", "is too far from the origin (more than 1e+30)"},
+    {"TwoCoordinates", "v 0 1", "has fewer than 3 coordinates"},
+};
+
+INSTANTIATE_TEST_SUITE_P(ObjMesh, BadObjVertex, ::testing::ValuesIn(kBadVertices),
+                         [](const ::testing::TestParamInfo<BadVertex>& info) { return std::string(info.param.name); });
 
 TEST(ObjMesh, MissingVertexNamesTheFileAndFace) {
   const auto file = data_dir() / "bad_index.obj";
-  EXPECT_TRUE(throws_input_error([&] { load_obj(file); }, file.string(), "face 1"));
+  EXPECT_TRUE(throws_input_error([&] { load_obj(file); }, file.string(), "face 1", "refers to a missing vertex"));
 }
 
 TEST(ObjMesh, UnreadableFileNamesTheFile) {

@@ -27,7 +27,8 @@ using namespace scene_mesh;
 
 // The axis-aligned box of a "min" and a "max", as a box shape and a bounding volume give it.
 OrientedBox read_min_max(JsonObject& o) {
-  const glm::vec3 min = o.required("min").vec3(), max = o.required("max").vec3();
+  const auto [min_node, max_node] = o.required_all({"min", "max"});
+  const glm::vec3 min = min_node.vec3(), max = max_node.vec3();
   if (!glm::all(glm::lessThan(min, max))) o.fail("max", "must exceed min on every axis");
   return OrientedBox{0.5f * (min + max), glm::mat3(1.0f), 0.5f * (max - min)};
 }
@@ -52,9 +53,9 @@ Mesh read_plane(JsonObject& o) {
 
 Mesh read_cylinder(JsonObject& o) {
   const glm::vec3 base = o.vec3_or("base", glm::vec3(0.0f));
-  const float radius = o.required("radius").number(greater_than(0));
-  const float height = o.required("height").number(greater_than(0));
-  return make_cylinder(base, radius, height, o.integer_or("segments", 3, 1024, 48));
+  const auto [radius, height] = o.required_all({"radius", "height"});
+  const float r = radius.number(greater_than(0)), h = height.number(greater_than(0));
+  return make_cylinder(base, r, h, o.integer_or("segments", 3, 1024, 48));
 }
 
 Mesh read_teapot(JsonObject& o) { return make_teapot(o.integer_or("segments", 2, 64, 8)); }

@@ -43,8 +43,9 @@ void add_sum(JsonObject& o, float weight, std::vector<PhaseLobe>& lobes) {
   double total = 0.0;
   for (const JsonNode& element : elements) {
     JsonObject term(element);
-    const float w = term.required("weight").number(closed(0, 1));
-    add_lobes(term.required("phase"), weight * w, lobes);
+    const auto [weight_node, phase] = term.required_all({"weight", "phase"});
+    const float w = weight_node.number(closed(0, 1));
+    add_lobes(phase, weight * w, lobes);
     term.finish();
     total += w;
   }
@@ -98,7 +99,8 @@ Camera read_camera(const JsonNode& node) {
   c.near = o.number_or("near", greater_than(0), c.near);
   c.far = o.number_or("far", greater_than(0), c.far);
   o.finish();
-  if (!(c.far > c.near)) o.fail("far", "must be greater than near (" + number_text(c.near) + ")");
+  if (!(c.far > c.near))
+    o.fail("far", "must be greater than near (" + number_text(c.near) + "), got " + number_text(c.far));
   const glm::dvec3 view = glm::dvec3(c.look_at) - glm::dvec3(c.position);
   if (!(glm::length(view) > 0.0)) o.fail("look_at", "must differ from position");
   if (parallel(view, glm::dvec3(c.up))) o.fail("up", "must not be parallel to the view direction");
@@ -134,11 +136,11 @@ LightModel read_light_model(const JsonNode& node) {
 
 Volume read_volume(const JsonNode& node) {
   JsonObject o(node);
-  const JsonNode shape = o.required("shape");
+  const auto [shape, min, max] = o.required_all({"shape", "min", "max"});
   if (shape.string() != "box") shape.fail("must be \"box\" (the only volume shape so far)");
   Volume v;
-  v.min = o.required("min").vec3();
-  v.max = o.required("max").vec3();
+  v.min = min.vec3();
+  v.max = max.vec3();
   if (!glm::all(glm::lessThan(v.min, v.max))) o.fail("max", "must exceed min on every axis");
   v.sigma_s = o.color_or("scattering", at_least(0), v.sigma_s);
   v.sigma_a = o.color_or("absorption", at_least(0), v.sigma_a);
@@ -149,10 +151,16 @@ Volume read_volume(const JsonNode& node) {
 
 // ---- lights ----------------------------------------------------------------
 
+// An image's errors name the image file alone; here they name the light's key too.
 std::shared_ptr<const Image> read_gobo(const JsonNode& node, const std::filesystem::path& base_dir) {
   const std::filesystem::path file = base_dir / node.string();
   if (!std::filesystem::is_regular_file(file)) node.fail("file not found: " + file.string());
-  auto image = std::make_shared<const Image>(read_image(file));
+  std::shared_ptr<const Image> image;
+  try {
+    image = std::make_shared<const Image>(read_image(file));
+  } catch (const InputError& e) {
+    node.fail("cannot read " + file.string() + ": " + e.message());
+  }
   if (image->empty()) node.fail("the image is empty: " + file.string());
   return image;
 }
@@ -168,15 +176,18 @@ void read_gobo_up(JsonObject& o, Light& light) {
 }
 
 void read_spot(JsonObject& o, Light& light, const std::filesystem::path& base_dir) {
-  light.position = o.required("position").vec3();
-  light.direction = o.required("direction").direction();
-  light.intensity = o.required("intensity").color(at_least(0));
-  light.cone_deg = o.required("cone_deg").number(left_open(0, 180));
+  const auto [position, direction, intensity, cone_deg] =
+      o.required_all({"position", "direction", "intensity", "cone_deg"});
+  light.position = position.vec3();
+  light.direction = direction.direction();
+  light.intensity = intensity.color(at_least(0));
+  light.cone_deg = cone_deg.number(left_open(0, 180));
   light.edge_deg = o.number_or("edge_deg", closed(0, light.cone_deg), 0.0f);
   read_gobo_up(o, light);
   if (const auto gobo = o.optional("gobo")) {
     // The gobo spans tan(cone_deg): it needs a cone narrower than a hemisphere.
-    if (!(light.cone_deg < 90.0f)) o.fail("cone_deg", "must be < 90 for a spot with a gobo");
+    if (!(light.cone_deg < 90.0f))
+      o.fail("cone_deg", "must be < 90 for a spot with a gobo, got " + number_text(light.cone_deg));
     light.gobo = read_gobo(*gobo, base_dir);
   }
 }
@@ -185,9 +196,10 @@ void read_spot(JsonObject& o, Light& light, const std::filesystem::path& base_di
 Beam read_beam(const JsonNode& node) {
   JsonObject o(node);
   Beam beam;
-  beam.origin = o.required("origin").vec3();
-  beam.size = o.required("size").vec2(greater_than(0));
-  beam.length = o.required("length").number(greater_than(0));
+  const auto [origin, size, length] = o.required_all({"origin", "size", "length"});
+  beam.origin = origin.vec3();
+  beam.size = size.vec2(greater_than(0));
+  beam.length = length.number(greater_than(0));
   o.finish();
   return beam;
 }
@@ -195,8 +207,9 @@ Beam read_beam(const JsonNode& node) {
 // A directional light lights all of space, or only its beam; gobo_up orients
 // the beam, and a gobo spans the beam's aperture, so both need a beam.
 void read_directional(JsonObject& o, Light& light, const std::filesystem::path& base_dir) {
-  light.direction = o.required("direction").direction();
-  light.irradiance = o.required("irradiance").color(at_least(0));
+  const auto [direction, irradiance] = o.required_all({"direction", "irradiance"});
+  light.direction = direction.direction();
+  light.irradiance = irradiance.color(at_least(0));
   const auto beam = o.optional("beam");
   for (const char* key : {"gobo_up", "gobo"})
     if (!beam && o.has(key)) o.fail(key, "needs a \"beam\": on a directional light it applies to the beam's aperture");
@@ -213,8 +226,9 @@ Light read_light(const JsonNode& node, const std::filesystem::path& base_dir) {
   Light light;
   if (name == "point") {
     light.type = LightType::point;
-    light.position = o.required("position").vec3();
-    light.intensity = o.required("intensity").color(at_least(0));
+    const auto [position, intensity] = o.required_all({"position", "intensity"});
+    light.position = position.vec3();
+    light.intensity = intensity.color(at_least(0));
   } else if (name == "spot") {
     light.type = LightType::spot;
     read_spot(o, light, base_dir);

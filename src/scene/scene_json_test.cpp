@@ -290,20 +290,33 @@ const BadCase kFormat[] = {
     {"FormatNotString", "/format", "1", "format"},
 };
 
+// The message lists the keys valid where the unknown one is: a shape's own and every object's.
 const BadCase kUnknownKeys[] = {
-    {"TopLevel", "/colour", "1", "colour"},
-    {"Camera", "/camera/zoom", "2", "camera.zoom"},
-    {"Medium", "/medium/density", "1", "medium.density"},
-    {"Light", "/lights/1/colour", "1", "lights[1].colour"},
-    {"ConeOnPointLight", "/lights/0/cone_deg", "20", "lights[0].cone_deg"},
+    {"TopLevel", "/colour", "1", "colour",
+     "unknown key (known here: format, name, camera, medium, light_model, ambient, volumes, lights, objects)"},
+    {"Camera", "/camera/zoom", "2", "camera.zoom",
+     "unknown key (known here: position, look_at, up, fov_y_deg, near, far)"},
+    {"Medium", "/medium/density", "1", "medium.density", "unknown key (known here: scattering, absorption, phase)"},
+    {"Light", "/lights/1/colour", "1", "lights[1].colour",
+     "unknown key (known here: type, position, direction, intensity, cone_deg, edge_deg, gobo_up, gobo)"},
+    {"ConeOnPointLight", "/lights/0/cone_deg", "20", "lights[0].cone_deg",
+     "unknown key (known here: type, position, intensity)"},
+    {"BeamOnDirectionalLight", "/lights/2/cone_deg", "20", "lights[2].cone_deg",
+     "unknown key (known here: type, direction, irradiance, beam)"},
     {"NestedPhase", "/medium/phase/terms/1/phase/terms/0/phase/k", "0.1",
-     "medium.phase.terms[1].phase.terms[0].phase.k"},
-    {"GOnIsotropic", "/volumes/0/phase", R"({"type": "isotropic", "g": 0.2})", "volumes[0].phase.g"},
-    {"Term", "/medium/phase/terms/0/wieght", "0.1", "medium.phase.terms[0].wieght"},
-    {"Volume", "/volumes/0/center", "[0, 0, 0]", "volumes[0].center"},
-    {"Object", "/objects/1/radius2", "1", "objects[1].radius2"},
-    {"KeyOfAnotherShape", "/objects/2/radius", "1", "objects[2].radius"},
-    {"A0OnPhysicalModel", "/light_model/a0", "1", "light_model.a0"},
+     "medium.phase.terms[1].phase.terms[0].phase.k", "unknown key (known here: type, g)"},
+    {"GOnIsotropic", "/volumes/0/phase", R"({"type": "isotropic", "g": 0.2})", "volumes[0].phase.g",
+     "unknown key (known here: type)"},
+    {"Term", "/medium/phase/terms/0/wieght", "0.1", "medium.phase.terms[0].wieght",
+     "unknown key (known here: weight, phase)"},
+    {"Volume", "/volumes/0/center", "[0, 0, 0]", "volumes[0].center",
+     "unknown key (known here: shape, min, max, scattering, absorption, phase)"},
+    {"Object", "/objects/1/radius2", "1", "objects[1].radius2",
+     "unknown key (known here: shape, center, radius, segments, outer_box, inner_box, translate, rotate_deg, scale, albedo, casts_shadows, name)"},
+    {"KeyOfAnotherShape", "/objects/2/radius", "1", "objects[2].radius",
+     "unknown key (known here: shape, min, max, outer_box, inner_box, translate, rotate_deg, scale, albedo, casts_shadows, name)"},
+    {"MeshObject", "/objects/5/segments", "8", "objects[5].segments", "unknown key (known here: mesh, outer_box, inner_box, translate, rotate_deg, scale, albedo, casts_shadows, name)"},
+    {"A0OnPhysicalModel", "/light_model/a0", "1", "light_model.a0", "unknown key (known here: type)"},
 };
 
 const BadCase kWrongTypes[] = {
@@ -321,8 +334,8 @@ const BadCase kWrongTypes[] = {
     {"VolumesNotArray", "/volumes", "1", "volumes"},
     {"ColourString", "/medium/scattering", R"("grey")", "medium.scattering"},
     {"ColourPair", "/lights/0/intensity", "[1, 2]", "lights[0].intensity"},
-    {"SegmentsFraction", "/objects/1/segments", "10.5", "objects[1].segments"},
-    {"SegmentsTooFew", "/objects/1/segments", "3", "objects[1].segments"},
+    {"SegmentsFraction", "/objects/1/segments", "10.5", "objects[1].segments", "must be a whole number, got 10.5"},
+    {"SegmentsTooFew", "/objects/1/segments", "3", "objects[1].segments", "must be in [4, 1024], got 3"},
     {"MeshPathNumber", "/objects/5/mesh", "1", "objects[5].mesh"},
     {"GoboNotString", "/lights/1/gobo", "7", "lights[1].gobo"},
     {"PhaseNotObject", "/medium/phase", R"("hg")", "medium.phase"},
@@ -330,21 +343,24 @@ const BadCase kWrongTypes[] = {
     {"LightTypeNumber", "/lights/0/type", "1", "lights[0].type"},
 };
 
-const BadCase kNonFinite[] = {
-    {"BeyondFloatRange", "/camera/fov_y_deg", "1e39", "camera.fov_y_deg"},
-    {"VectorBeyondFloatRange", "/lights/0/position/0", "-1e300", "lights[0].position[0]"},
-    {"ColourBeyondFloatRange", "/lights/1/intensity", "1e39", "lights[1].intensity"},
+// Finite numbers beyond float range: a bounded value says its interval, an unbounded one the float's limit.
+const BadCase kBeyondFloatRange[] = {
+    {"Bounded", "/camera/fov_y_deg", "1e39", "camera.fov_y_deg", "must be in (0, 180), got 1e+39"},
+    {"VectorComponent", "/lights/0/position/0", "-1e300", "lights[0].position[0]",
+     "too small, at least -3.40282e+38, got -1e+300"},
+    {"Colour", "/lights/1/intensity", "1e39", "lights[1].intensity", "too large, at most 3.40282e+38, got 1e+39"},
+    {"Ambient", "/ambient/1", "1e300", "ambient[1]", "too large, at most 3.40282e+38, got 1e+300"},
 };
 
 const BadCase kOutOfRange[] = {
-    {"FovZero", "/camera/fov_y_deg", "0", "camera.fov_y_deg"},
-    {"Fov180", "/camera/fov_y_deg", "180", "camera.fov_y_deg"},
+    {"FovZero", "/camera/fov_y_deg", "0", "camera.fov_y_deg", "must be in (0, 180), got 0"},
+    {"Fov180", "/camera/fov_y_deg", "180", "camera.fov_y_deg", "must be in (0, 180), got 180"},
     {"FovNegative", "/camera/fov_y_deg", "-10", "camera.fov_y_deg"},
-    {"NearZero", "/camera/near", "0", "camera.near"},
+    {"NearZero", "/camera/near", "0", "camera.near", "must be > 0, got 0"},
     {"NearNegative", "/camera/near", "-0.1", "camera.near"},
-    {"FarBelowNear", "/camera/far", "0.05", "camera.far"},
+    {"FarBelowNear", "/camera/far", "0.05", "camera.far", "must be greater than near (0.1), got 0.05"},
     {"FarEqualsNear", "/camera/far", "0.1", "camera.far"},
-    {"NegativeScattering", "/medium/scattering", "-0.1", "medium.scattering"},
+    {"NegativeScattering", "/medium/scattering", "-0.1", "medium.scattering", "must be >= 0, got -0.1"},
     {"NegativeScatteringChannel", "/medium/scattering/1", "-0.01", "medium.scattering[1]"},
     {"NegativeAbsorption", "/medium/absorption", "-0.01", "medium.absorption"},
     {"NegativeVolumeScattering", "/volumes/0/scattering/0", "-1", "volumes[0].scattering[0]"},
@@ -354,15 +370,15 @@ const BadCase kOutOfRange[] = {
     {"NegativeIrradiance", "/lights/2/irradiance", "-2", "lights[2].irradiance"},
     {"NegativeAmbient", "/ambient/0", "-0.1", "ambient[0]"},
     {"ConeZero", "/lights/1/cone_deg", "0", "lights[1].cone_deg"},
-    {"ConeAbove180", "/lights/1/cone_deg", "180.5", "lights[1].cone_deg"},
+    {"ConeAbove180", "/lights/1/cone_deg", "180.5", "lights[1].cone_deg", "must be in (0, 180], got 180.5"},
     {"EdgeNegative", "/lights/1/edge_deg", "-1", "lights[1].edge_deg"},
-    {"EdgeAboveCone", "/lights/1/edge_deg", "26", "lights[1].edge_deg"},
+    {"EdgeAboveCone", "/lights/1/edge_deg", "26", "lights[1].edge_deg", "must be in [0, 25], got 26"},
     {"HgGOne", "/medium/phase/terms/1/phase/terms/0/phase/g", "1",
-     "medium.phase.terms[1].phase.terms[0].phase.g"},
+     "medium.phase.terms[1].phase.terms[0].phase.g", "must be in (-1, 1), got 1"},
     {"HgGMinusOne", "/medium/phase/terms/1/phase/terms/0/phase/g", "-1",
      "medium.phase.terms[1].phase.terms[0].phase.g"},
     {"HgGRoundingOntoOne", "/medium/phase/terms/1/phase/terms/0/phase/g", "0.99999999999",
-     "medium.phase.terms[1].phase.terms[0].phase.g"},
+     "medium.phase.terms[1].phase.terms[0].phase.g", "must be in (-1, 1), got 0.99999999999, which is 1 as a float"},
     {"SchlickGAboveOne", "/medium/phase/terms/1/phase/terms/1/phase/g", "1.5",
      "medium.phase.terms[1].phase.terms[1].phase.g"},
     {"HgWithoutG", "/volumes/0/phase", R"({"type": "henyey_greenstein"})", "volumes[0].phase.g"},
@@ -431,7 +447,7 @@ const BadCase kObjectsAndLights[] = {
     {"ShapeAndMesh", "/objects/1/mesh", R"("cube.obj")", "objects[1]"},
     {"NeitherShapeNorMesh", "/objects/1/shape", erase, "objects[1]"},
     {"UnknownShape", "/objects/1/shape", R"("torus")", "objects[1].shape"},
-    {"MissingRadius", "/objects/1/radius", erase, "objects[1].radius"},
+    {"MissingRadius", "/objects/1/radius", erase, "objects[1].radius", "is required"},
     {"MissingBoxMax", "/objects/2/max", erase, "objects[2].max"},
     {"MissingMeshFile", "/objects/5/mesh", R"("missing.obj")", "objects[5].mesh"},
     {"UnknownLightType", "/lights/0/type", R"("area")", "lights[0].type"},
@@ -439,11 +455,30 @@ const BadCase kObjectsAndLights[] = {
     {"MissingPosition", "/lights/0/position", erase, "lights[0].position"},
     {"MissingCone", "/lights/1/cone_deg", erase, "lights[1].cone_deg"},
     {"MissingIrradiance", "/lights/2/irradiance", erase, "lights[2].irradiance"},
-    {"MissingGoboFile", "/lights/1/gobo", R"("missing.png")", "lights[1].gobo"},
+    {"MissingGoboFile", "/lights/1/gobo", R"("missing.png")", "lights[1].gobo",
+     "file not found: " AIRLIGHT_TEST_DATA "/scenes/missing.png"},
     {"GoboOnWideCone", "/lights/1",
      R"({"type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "intensity": 1,
          "cone_deg": 90, "gobo": "missing.png"})",
-     "lights[1].cone_deg"},
+     "lights[1].cone_deg", "must be < 90 for a spot with a gobo, got 90"},
+};
+
+// Every missing required key of an object in one message; one missing names its own key.
+const BadCase kMissingKeys[] = {
+    {"CylinderRadiusAndHeight", "/objects/4", R"({"shape": "cylinder"})", "objects[4]",
+     "missing required keys: radius, height"},
+    {"BoxMinAndMax", "/objects/2", R"({"shape": "box", "albedo": 0.5})", "objects[2]",
+     "missing required keys: min, max"},
+    {"BoundingBoxMinAndMax", "/objects/1/outer_box", "{}", "objects[1].outer_box", "missing required keys: min, max"},
+    {"PointLight", "/lights/0", R"({"type": "point"})", "lights[0]", "missing required keys: position, intensity"},
+    {"SpotLight", "/lights/1", R"({"type": "spot", "intensity": 1})", "lights[1]",
+     "missing required keys: position, direction, cone_deg"},
+    {"DirectionalLight", "/lights/2", R"({"type": "directional"})", "lights[2]",
+     "missing required keys: direction, irradiance"},
+    {"Beam", "/lights/2/beam", "{}", "lights[2].beam", "missing required keys: origin, size, length"},
+    {"Volume", "/volumes/0", R"({"min": [0, 0, 0]})", "volumes[0]", "missing required keys: shape, max"},
+    {"PhaseTerm", "/medium/phase/terms/0", "{}", "medium.phase.terms[0]", "missing required keys: weight, phase"},
+    {"OneOfTwo", "/lights/2/irradiance", erase, "lights[2].irradiance", "is required"},
 };
 
 // A beam and the keys that need one, on the valid scene's directional light (lights[2]).
@@ -491,11 +526,12 @@ std::string case_name(const ::testing::TestParamInfo<BadCase>& info) { return in
 INSTANTIATE_TEST_SUITE_P(Format, BadScene, ::testing::ValuesIn(kFormat), case_name);
 INSTANTIATE_TEST_SUITE_P(UnknownKey, BadScene, ::testing::ValuesIn(kUnknownKeys), case_name);
 INSTANTIATE_TEST_SUITE_P(WrongType, BadScene, ::testing::ValuesIn(kWrongTypes), case_name);
-INSTANTIATE_TEST_SUITE_P(NonFinite, BadScene, ::testing::ValuesIn(kNonFinite), case_name);
+INSTANTIATE_TEST_SUITE_P(BeyondFloatRange, BadScene, ::testing::ValuesIn(kBeyondFloatRange), case_name);
 INSTANTIATE_TEST_SUITE_P(OutOfRange, BadScene, ::testing::ValuesIn(kOutOfRange), case_name);
 INSTANTIATE_TEST_SUITE_P(ZeroVector, BadScene, ::testing::ValuesIn(kZeroVectors), case_name);
 INSTANTIATE_TEST_SUITE_P(ObjectOrLight, BadScene, ::testing::ValuesIn(kObjectsAndLights),
                          case_name);
+INSTANTIATE_TEST_SUITE_P(MissingKeys, BadScene, ::testing::ValuesIn(kMissingKeys), case_name);
 INSTANTIATE_TEST_SUITE_P(Beam, BadScene, ::testing::ValuesIn(kBeams), case_name);
 INSTANTIATE_TEST_SUITE_P(BoundingBox, BadScene, ::testing::ValuesIn(kBoundingBoxes), case_name);
 
@@ -511,11 +547,14 @@ TEST(SceneJson, MalformedJsonReportsTheParsersPosition) {
   }
 }
 
+// Beyond double range the lexer fails, before any key's interval is known.
 TEST(SceneJson, NumberOverflowIsAnErrorNamingItsKey) {
   const std::string text = R"({"format": "airlight-scene/1", "ambient": 1e999})";
-  EXPECT_TRUE(throws_input_error([&] { parse_scene(text, "big.json"); }, "big.json", "ambient"));
+  EXPECT_TRUE(throws_input_error([&] { parse_scene(text, "big.json"); }, "big.json", "ambient",
+                                 "too large, at most 3.40282e+38, got 1e999"));
   const std::string nested = R"({"format": "airlight-scene/1", "camera": {"position": [0, -1e999, 0]}})";
-  EXPECT_TRUE(throws_input_error([&] { parse_scene(nested, "big.json"); }, "big.json", "camera.position[1]"));
+  EXPECT_TRUE(throws_input_error([&] { parse_scene(nested, "big.json"); }, "big.json", "camera.position[1]",
+                                 "too small, at least -3.40282e+38, got -1e999"));
 }
 
 TEST(SceneJson, DuplicateKeyIsAnError) {
@@ -535,9 +574,9 @@ TEST(SceneJson, MissingSceneFileNamesIt) {
 
 TEST(SceneJson, ObjErrorsNameTheObjFile) {
   Json j = valid_scene();
-  j["objects"][5]["mesh"] = "degenerate.obj";
-  EXPECT_TRUE(throws_input_error([&] { parse(j); }, (data_dir() / "degenerate.obj").string(),
-                                 "face 2"));
+  j["objects"][5]["mesh"] = "bad_index.obj";
+  EXPECT_TRUE(throws_input_error([&] { parse(j); }, (data_dir() / "bad_index.obj").string(), "face 1",
+                                 "refers to a missing vertex"));
 }
 
 }  // namespace

@@ -20,17 +20,15 @@ inline std::filesystem::path data_dir() {
   return std::filesystem::path(AIRLIGHT_TEST_DATA) / "scenes";
 }
 
-// Runs f and checks that it throws InputError naming `file` and `key`, its message ending
-// in `message` (any message when empty).
+// Runs f and checks that it throws InputError naming `file` and `key`, its message
+// exactly `message` (any message when empty).
 template <class F>
 ::testing::AssertionResult throws_input_error(F f, const std::string& file, const std::string& key,
                                               const std::string& message = "") {
   try {
     f();
   } catch (const InputError& e) {
-    const std::string what = e.what();
-    const bool said = what.size() >= message.size() &&
-                      what.compare(what.size() - message.size(), message.size(), message) == 0;
+    const bool said = message.empty() || e.message() == message;
     if (e.file() == file && e.key() == key && said) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << "file \"" << e.file() << "\", key \"" << e.key()
                                          << "\" (" << e.what() << "); expected file \"" << file
