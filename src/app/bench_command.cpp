@@ -158,7 +158,7 @@ std::vector<Variant> plan_variants(const BenchOptions& o) {
 
 std::vector<Scene> load_scenes(const BenchOptions& o) {
   if (o.scene_files.empty() && o.builtins.empty())
-    throw InputError("command line", "--scene", "give --scene FILE or --builtin NAME (repeatable)");
+    throw InputError("--scene", "", "give --scene FILE or --builtin NAME (repeatable)");
   std::vector<Scene> scenes;
   for (const auto& file : o.scene_files) scenes.push_back(load_scene(file));
   for (const auto& name : o.builtins) scenes.push_back(builtin_scene(name));

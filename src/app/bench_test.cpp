@@ -80,7 +80,7 @@ TEST(Bench, BadArgumentsExitTwoNamingOptionAndKey) {
   expect_bad_argument("--methods raymarch --sweep planes.planes=15,30", "--sweep", "planes.planes");
   expect_bad_argument("--methods raymarch --set raymarch.bogus=1", "--set", "bogus");
   expect_bad_argument("--methods raymarch,planes --set steps=8", "--set", "steps");
-  expect_bad_argument("--methods raymarch --sizes 0x5", "command line", "--sizes");
+  expect_bad_argument("--methods raymarch --sizes 0x5", "--sizes", "0x5");
   EXPECT_FALSE(fs::exists(work_dir() / "bad.csv"));  // nothing ran
 }
 

@@ -114,7 +114,7 @@ TEST(Cli, BadOptionsExitTwoNamingTheOption) {
   expect_bad_input("render --builtin teapot_spot --set rel_tol=-1" + out, "--set", "rel_tol");
   expect_bad_input("render --builtin teapot_spot --set raymarch.steps=4" + out, "--set", "raymarch.steps");
   expect_bad_input("render --builtin teapot_spot --set bogus=1" + out, "--set", "bogus");
-  expect_bad_input("render --builtin teapot_spot --size 0x5" + out, "command line", "--size");
+  expect_bad_input("render --builtin teapot_spot --size 0x5" + out, "--size", "0x5");
   expect_bad_input("render --builtin teapot_spot --size 8x6 --out x.bmp", "--out", "x.bmp");
   EXPECT_EQ(run("render --builtin teapot_spot").status, 2);     // --out is required
   EXPECT_EQ(run("render --size 8x6" + out).status, 2);          // no scene

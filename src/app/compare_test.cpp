@@ -124,7 +124,7 @@ TEST(Compare, BadArgumentsExitTwoNamingThem) {
   expect_bad_options("--methods raymarch --set planes.steps=1", "--set", "planes.steps");
   expect_bad_options("--methods raymarch,,planes", "--methods", "(empty entry)");
   expect_bad_options("--methods raymarch:", "--methods", "raymarch:");
-  expect_bad_options("--methods raymarch --size 0x5", "command line", "--size");
+  expect_bad_options("--methods raymarch --size 0x5", "--size", "0x5");
   EXPECT_EQ(run("compare --scene " + scene_file().string() + " --out x.png").status, 2);  // --methods is required
   expect_bad_options("--methods raymarch --exposure 0", "--exposure", "");
 }

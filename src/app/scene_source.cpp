@@ -14,7 +14,7 @@ void SceneSource::add_options(CLI::App& command) {
 }
 
 Scene SceneSource::load() const {
-  if (file.empty() == builtin.empty()) throw InputError("command line", "--scene", "give --scene FILE or --builtin NAME");
+  if (file.empty() == builtin.empty()) throw InputError("--scene", "", "give --scene FILE or --builtin NAME");
   return file.empty() ? builtin_scene(builtin) : load_scene(file);
 }
 
@@ -35,7 +35,7 @@ Size parse_size(const std::string& text, const std::string& option) {
     size.width = parse_dimension(std::string_view(text).substr(0, x), &ok);
     size.height = parse_dimension(std::string_view(text).substr(x + 1), &ok);
   }
-  if (!ok) throw InputError("command line", option, "expected WxH with 1 ≤ W, H ≤ 16384, got '" + text + "'");
+  if (!ok) throw InputError(option, text, "expected WxH with 1 ≤ W, H ≤ 16384");
   return size;
 }
 
