@@ -65,6 +65,14 @@ TEST(Cli, DegenerateTriangleInAnObjNamesTheObjAndTheFace) {
   expect_bad_input("render --scene " + scene.string() + " --out x.pfm", obj.string(), "face 2");
 }
 
+// glTF scenes fail the same way, naming the glTF element (docs/scene-format.md "glTF scenes").
+TEST(Cli, MalformedGltfExitsTwoNamingFileAndElement) {
+  const fs::path gltf = write_file("no_position.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
+      "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {}}]}]})");
+  expect_bad_input("render --scene " + gltf.string() + " --size 8x6 --out " + (work_dir() / "x.pfm").string(),
+                   gltf.string(), "meshes[0].primitives[0]");
+}
+
 TEST(Cli, BadOptionsExitTwoNamingTheOption) {
   const std::string out = " --out " + (work_dir() / "x.pfm").string();
   expect_bad_input("render --builtin no_such_scene" + out, "<builtin>", "no_such_scene");
