@@ -5,9 +5,9 @@
 #
 # Made with Debian's blender 3.4.1 (glTF exporter 3.4.50). Blender is z-up; the exporter
 # turns the scene y-up (export_yup). A floor, two columns under a turned empty (a node
-# hierarchy), a block, a spot with a soft edge between the
-# columns, a weak sun, a camera, and the fog as the scene's custom property "airlight",
-# which the exporter writes to the glTF scene's extras.
+# hierarchy), a block, a spot with a soft edge behind the columns, a weak sun, a camera,
+# and the fog as the scene's custom property "airlight", which the exporter writes to the
+# glTF scene's extras. The exporter needs python3-numpy besides blender.
 import math
 import sys
 
