@@ -135,7 +135,7 @@ private:
     const int stride = acc.ByteStride(view);
     if (stride <= 0) fail(indexed("bufferViews", v), "has an invalid byteStride");
     const size_t element = size_t(components) * size_t(tinygltf::GetComponentSizeInBytes(uint32_t(acc.componentType)));
-    if (acc.count > 0 && (acc.byteOffset > view.byteLength ||
+    if (acc.count > 0 && (acc.count > view.byteLength || acc.byteOffset > view.byteLength ||
                           (acc.count - 1) * size_t(stride) + element > view.byteLength - acc.byteOffset))
       fail(key, "runs past the end of " + indexed("bufferViews", v));
     return {m_.buffers[b].data.data() + view.byteOffset + acc.byteOffset, size_t(stride), acc.count};
@@ -191,6 +191,8 @@ private:
   void add_mesh(size_t n, size_t mesh_index, const glm::dmat4& world) {
     const tinygltf::Mesh& mesh = m_.meshes[mesh_index];
     const glm::dmat3 linear(world);
+    // A zero scale hides a node (§3.5.3 allows it): nothing of it is drawn.
+    if (glm::determinant(linear) == 0.0) return;
     const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
     // §3.7.2.1: a transform with a negative determinant turns counter-clockwise faces clockwise.
     const bool flip = glm::determinant(linear) < 0.0;
@@ -257,8 +259,10 @@ private:
   // ---- cameras (§3.10) and lights (KHR_lights_punctual) ----
 
   // A camera looks down its node's −Z with +Y up (§3.10.1), as a light points down −Z.
-  static glm::dvec3 node_axis(const glm::dmat4& world, const glm::dvec3& local) {
-    return glm::normalize(glm::dmat3(world) * local);
+  glm::dvec3 node_axis(const glm::dmat4& world, const glm::dvec3& local, const std::string& key) const {
+    const glm::dvec3 axis = glm::dmat3(world) * local;
+    if (!(glm::length(axis) > 1e-12)) fail(key, "its node's transform has a zero scale: it has no direction");
+    return glm::normalize(axis);
   }
 
   void set_camera(size_t c, const glm::dmat4& world) {
@@ -270,8 +274,8 @@ private:
     if (!(p.znear > 0.0)) fail(key + ".perspective.znear", "must be > 0");
     Camera camera;
     camera.position = glm::vec3(world * glm::dvec4(0, 0, 0, 1));
-    camera.look_at = camera.position + glm::vec3(node_axis(world, {0, 0, -1}));
-    camera.up = glm::vec3(node_axis(world, {0, 1, 0}));
+    camera.look_at = camera.position + glm::vec3(node_axis(world, {0, 0, -1}, key));
+    camera.up = glm::vec3(node_axis(world, {0, 1, 0}, key));
     camera.fov_y_deg = float(p.yfov * 180.0 / std::numbers::pi);
     camera.near = float(p.znear);
     if (p.zfar > 0.0) camera.far = float(p.zfar);  // 0: infinite in tinygltf; airlight's default then
@@ -318,7 +322,7 @@ private:
     const Color radiometric = color * float(l.intensity / lumens_per_watt);
     Light light;
     light.position = glm::vec3(world * glm::dvec4(0, 0, 0, 1));
-    light.direction = glm::vec3(node_axis(world, {0, 0, -1}));
+    light.direction = glm::vec3(node_axis(world, {0, 0, -1}, lkey));
     light.gobo_up = scene_light::default_gobo_up(light.direction);
     if (l.type == "point") {
       light.type = LightType::point;

@@ -212,6 +212,18 @@ TEST(GltfScene, MirroredNodesKeepWindingConsistentWithNormals) {
   EXPECT_GT(scene_test::signed_volume(s.meshes[0]), 0.0);
 }
 
+// A zero scale hides a node's mesh (§3.5.3); a light under it has no direction.
+TEST(GltfScene, ZeroScaleHidesAMeshAndLeavesALightWithoutDirection) {
+  Gltf g;
+  g.node({{"mesh", g.mesh(triangle, {0, 1, 2})}, {"scale", {0, 0, 0}}});
+  EXPECT_TRUE(load_scene(g.write("zero_scale")).meshes.empty());
+  const int sun = g.light({{"type", "directional"}});
+  g.node({{"scale", {0, 0, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", sun}}}}}});
+  const fs::path file = g.write("zero_scale_light");
+  EXPECT_TRUE(throws_input_error([&] { load_scene(file); }, file.string(), "extensions.KHR_lights_punctual.lights[0]",
+                                 "its node's transform has a zero scale: it has no direction"));
+}
+
 // ---- equivalence with a JSON scene ----
 
 // The same box, spot and camera written as a scene file and as glTF load to the same model.
