@@ -122,7 +122,8 @@ private:
     const std::string key = indexed("accessors", a);
     const tinygltf::Accessor& acc = m_.accessors[a];
     if (acc.sparse.isSparse) fail(key, "sparse accessors are not supported");
-    if (tinygltf::GetNumComponentsInType(uint32_t(acc.type)) != components || !component_types.contains(acc.componentType))
+    if (tinygltf::GetNumComponentsInType(uint32_t(acc.type)) != components ||
+        !component_types.contains(acc.componentType))
       fail(key, "must be " + what + " (type " + std::to_string(acc.type) + ", componentType " +
                     std::to_string(acc.componentType) + ")");
     const size_t v = checked_index(acc.bufferView, m_.bufferViews.size(), key + ".bufferView", "bufferViews");
@@ -205,11 +206,13 @@ private:
         fail(key, "mode " + std::to_string(prim.mode) + " (" + mode_name(prim.mode) + ") is not triangles");
       const auto position = prim.attributes.find("POSITION");
       if (position == prim.attributes.end()) fail(key, "has no POSITION attribute");
-      std::vector<glm::dvec3> positions =
-          read_vec3(checked_index(position->second, m_.accessors.size(), key + ".attributes.POSITION", "accessors"), "POSITION");
+      const size_t position_accessor =
+          checked_index(position->second, m_.accessors.size(), key + ".attributes.POSITION", "accessors");
+      std::vector<glm::dvec3> positions = read_vec3(position_accessor, "POSITION");
       std::vector<uint32_t> indices(positions.size());
       if (prim.indices != -1)
-        indices = read_indices(checked_index(prim.indices, m_.accessors.size(), key + ".indices", "accessors"), positions.size());
+        indices = read_indices(checked_index(prim.indices, m_.accessors.size(), key + ".indices", "accessors"),
+                               positions.size());
       else
         for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
       if (indices.size() % 3 != 0) fail(key, "has " + std::to_string(indices.size()) + " indices, not a multiple of 3");
@@ -223,7 +226,8 @@ private:
         if (normals.size() != positions.size()) fail(indexed("accessors", a), "must have as many elements as POSITION");
         for (size_t i = 0; i < positions.size(); ++i) {
           const glm::dvec3 nw = normal_matrix * normals[i];
-          if (!(glm::length(nw) > 1e-12)) fail(indexed("accessors", a), "element " + std::to_string(i) + " has zero length");
+          if (!(glm::length(nw) > 1e-12))
+            fail(indexed("accessors", a), "element " + std::to_string(i) + " has zero length");
           out.positions.push_back(glm::vec3(positions[i]));
           out.normals.push_back(glm::vec3(glm::normalize(nw)));
         }
@@ -284,9 +288,9 @@ private:
     camera_ = true;
   }
 
-  // No camera in the scene: one looking at the meshes' bounding sphere from the front (+Z,
-  // §3.4: "the front of a glTF asset faces +Z") and a little above, the sphere filling the
-  // default 45° field of view.
+  // No camera in the scene: one looking at the sphere around the meshes' bounding box from
+  // the front (+Z, §3.4: "the front of a glTF asset faces +Z") and a little above, the
+  // sphere filling the default 45° field of view.
   Camera framing_camera() const {
     Camera camera;
     if (out_.meshes.empty()) return camera;
@@ -322,8 +326,10 @@ private:
     const Color radiometric = color * float(l.intensity / lumens_per_watt);
     Light light;
     light.position = glm::vec3(world * glm::dvec4(0, 0, 0, 1));
-    light.direction = glm::vec3(node_axis(world, {0, 0, -1}, lkey));
-    light.gobo_up = scene_light::default_gobo_up(light.direction);
+    if (l.type == "spot" || l.type == "directional") {
+      light.direction = glm::vec3(node_axis(world, {0, 0, -1}, lkey));
+      light.gobo_up = scene_light::default_gobo_up(light.direction);
+    }
     if (l.type == "point") {
       light.type = LightType::point;
       light.intensity = radiometric;

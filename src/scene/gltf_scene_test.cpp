@@ -184,7 +184,10 @@ TEST(GltfScene, NodeHierarchyComposesTranslationRotationScaleAndMatrix) {
   g.node({{"translation", {10, 0, 0}}, {"rotation", {0, h, 0, h}}, {"children", {child}}});
   const Scene s = load_scene(g.write("hierarchy"));
   // R_y(90°) maps (x, y, z) to (z, y, −x); the leaf's point p is at 10·x̂ + R(2·(p + ẑ)).
-  const auto place = [](glm::vec3 p) { const glm::vec3 q = 2.0f * (p + glm::vec3(0, 0, 1)); return glm::vec3(10 + q.z, q.y, -q.x); };
+  const auto place = [](glm::vec3 p) {
+    const glm::vec3 q = 2.0f * (p + glm::vec3(0, 0, 1));
+    return glm::vec3(10 + q.z, q.y, -q.x);
+  };
   ASSERT_EQ(s.meshes.size(), 1u);
   ASSERT_TRUE(well_formed(s.meshes[0]));
   for (size_t i = 0; i < 3; ++i) expect_vec(s.meshes[0].positions[i], place(triangle[i]), 1e-5f);
@@ -254,8 +257,10 @@ TEST(GltfScene, LoadsToTheSameSceneAsTheEquivalentJson) {
           {"extensions", {{"KHR_lights_punctual", {{"light", spot}}}}}});
   // Pitched about X only, so the camera's up stays in the vertical plane, as the JSON's.
   const double pitch = std::atan2(-1.0, 8.0);
-  g.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 40 * pi / 180}, {"znear", 0.05}, {"zfar", 50}}}}};
-  g.node({{"camera", 0}, {"translation", {0, 2, 8}}, {"rotation", quaternion(glm::angleAxis(pitch, glm::dvec3(1, 0, 0)))}});
+  g.json["cameras"] = {
+      {{"type", "perspective"}, {"perspective", {{"yfov", 40 * pi / 180}, {"znear", 0.05}, {"zfar", 50}}}}};
+  g.node({{"camera", 0}, {"translation", {0, 2, 8}},
+          {"rotation", quaternion(glm::angleAxis(pitch, glm::dvec3(1, 0, 0)))}});
   const Scene actual = load_scene(g.write("equivalent"));
 
   ASSERT_EQ(actual.meshes.size(), 1u);
@@ -441,8 +446,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "refers to extensions.KHR_lights_punctual.lights[2], which does not exist"},
         Malformed{"wide_spot",
                   [](Gltf& g) {
-                    g.node({{"extensions", {{"KHR_lights_punctual", {{"light", g.light({{"type", "spot"},
-                                                                                        {"spot", {{"outerConeAngle", 2}}}})}}}}}});
+                    const int spot = g.light({{"type", "spot"}, {"spot", {{"outerConeAngle", 2}}}});
+                    g.node({{"extensions", {{"KHR_lights_punctual", {{"light", spot}}}}}});
                   },
                   "extensions.KHR_lights_punctual.lights[0].spot.outerConeAngle", "must be in (0, pi/2]"},
         Malformed{"orthographic",
@@ -463,8 +468,10 @@ TEST(GltfScene, AFileThatIsNotGltfFailsNamingTheFile) {
   std::ofstream(glb) << "a text file, not a binary glTF";
   std::ofstream(gltf) << "{\"asset\": ";
   EXPECT_TRUE(throws_input_error([&] { load_scene(glb); }, glb.string(), "", "not a valid glTF file: Invalid magic."));
-  EXPECT_TRUE(throws_input_error([&] { load_scene(gltf); }, gltf.string(), "", "not a valid glTF file: [json.exception.parse_error.101] parse error at line 1, column 11: "
-                                 "syntax error while parsing value - unexpected end of input; expected '[', '{', or a literal"));
+  EXPECT_TRUE(throws_input_error([&] { load_scene(gltf); }, gltf.string(), "",
+                                 "not a valid glTF file: [json.exception.parse_error.101] parse error at line 1, "
+                                 "column 11: syntax error while parsing value - unexpected end of input; expected "
+                                 "'[', '{', or a literal"));
 }
 
 }  // namespace
