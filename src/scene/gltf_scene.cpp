@@ -378,10 +378,13 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;
 }
 
-// tinygltf's messages end in newlines and may hold several lines.
-std::string one_line(std::string text) {
+// tinygltf's messages end in newlines and may hold several lines; a JSON syntax error
+// carries nlohmann's "[json.exception.parse_error.101] ", which says nothing to a user.
+std::string plain(std::string text) {
   while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
   std::replace(text.begin(), text.end(), '\n', ' ');
+  const size_t id = text.find("[json.exception."), end = text.find("] ", id);
+  if (id != std::string::npos && end != std::string::npos) text.erase(id, end + 2 - id);
   return text;
 }
 
@@ -408,7 +411,7 @@ Scene load_gltf(const std::filesystem::path& file) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   const bool ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
                                 : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
-  if (!ok) throw InputError(file.string(), "", "not a valid glTF file: " + one_line(error));
+  if (!ok) throw InputError(file.string(), "", "not a valid glTF file: " + plain(error));
   Scene scene = Reader(model, file.string()).read();
   scene.source = file;
   scene.name = file.stem().string();
