@@ -104,6 +104,14 @@ TEST(Cli, DegenerateTrianglesInAnObjAreSkippedWithAWarning) {
   EXPECT_EQ(o.err, "airlight: warning: " + obj.string() + ": skipped 2 degenerate triangles (zero area)\n");
 }
 
+// glTF scenes fail the same way, naming the glTF element (docs/scene-format.md "glTF scenes").
+TEST(Cli, MalformedGltfExitsTwoNamingFileAndElement) {
+  const fs::path gltf = write_file("no_position.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
+      "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {}}]}]})");
+  expect_bad_input("render --scene " + gltf.string() + " --size 8x6 --out " + (work_dir() / "x.pfm").string(),
+                   gltf.string(), "meshes[0].primitives[0]");
+}
+
 TEST(Cli, BadOptionsExitTwoNamingTheOption) {
   const std::string out = " --out " + (work_dir() / "x.pfm").string();
   expect_error("render --builtin no_such_scene" + out,

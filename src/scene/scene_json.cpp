@@ -1,6 +1,7 @@
 // The airlight-scene/1 format (docs/design.md §4): one reader per section, each
 // checking its values' types and ranges and rejecting keys it does not know.
 #include "core/image_io.hpp"
+#include "scene/gltf_scene.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/light_defaults.hpp"
 #include "scene/scene_parse.hpp"
@@ -15,9 +16,9 @@
 #include <sstream>
 
 namespace airlight {
+namespace scene_json {
 namespace {
 
-using namespace scene_json;
 using scene_light::default_gobo_up;
 using scene_light::parallel;
 
@@ -251,12 +252,34 @@ std::vector<JsonNode> elements_of(JsonObject& o, std::string_view name) {
   return array ? array->elements() : std::vector<JsonNode>{};
 }
 
+// "gltf": the .gltf or .glb file, beside this one, whose scene this one starts from.
+Scene read_gltf_reference(const JsonNode& node, const std::filesystem::path& base_dir) {
+  const std::filesystem::path file = base_dir / node.string();
+  if (!scene_gltf::is_gltf_file(file)) node.fail("must name a .gltf or .glb file");
+  if (!std::filesystem::is_regular_file(file)) node.fail("file not found: " + file.string());
+  return scene_gltf::load_gltf(file);
+}
+
 void check_format(JsonObject& o) {
   const JsonNode format = o.required("format");
   if (format.string() != kFormat) format.fail(std::string("must be \"") + kFormat + "\"");
 }
 
 }  // namespace
+
+void read_fog(JsonObject& o, Scene& scene) {
+  if (const auto medium = o.optional("medium")) scene.medium = read_medium(*medium);
+  if (const auto model = o.optional("light_model")) scene.light_model = read_light_model(*model);
+  scene.ambient = o.color_or("ambient", at_least(0), scene.ambient);
+  if (const auto volumes = o.optional("volumes")) {
+    scene.volumes.clear();
+    for (const JsonNode& n : volumes->elements()) scene.volumes.push_back(read_volume(n));
+  }
+}
+
+}  // namespace scene_json
+
+using namespace scene_json;
 
 Scene parse_scene(const std::string& json_text, const std::filesystem::path& file) {
   const std::string file_name = file.string();
@@ -265,19 +288,18 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
   JsonObject o(root);
   check_format(o);
   const std::filesystem::path base_dir = file.parent_path();
+  // With "gltf" the glTF's meshes, lights, camera and extras come first; the JSON's keys
+  // replace them, except lights and objects, which add to them (docs/scene-format.md).
   Scene scene;
+  if (const auto gltf = o.optional("gltf")) scene = read_gltf_reference(*gltf, base_dir);
   scene.source = file;
   scene.name = file.stem().string();
   if (const auto name = o.optional("name")) scene.name = name->string();
   if (const auto camera = o.optional("camera")) scene.camera = read_camera(*camera);
-  if (const auto medium = o.optional("medium")) scene.medium = read_medium(*medium);
-  if (const auto model = o.optional("light_model")) scene.light_model = read_light_model(*model);
-  scene.ambient = o.color_or("ambient", at_least(0), scene.ambient);
-  const auto volumes = elements_of(o, "volumes");
+  read_fog(o, scene);
   const auto lights = elements_of(o, "lights");
   const auto objects = elements_of(o, "objects");
   o.finish();  // before loading meshes and images: a misspelt key is the cheaper error
-  for (const JsonNode& n : volumes) scene.volumes.push_back(read_volume(n));
   for (const JsonNode& n : lights) scene.lights.push_back(read_light(n, base_dir));
   for (const JsonNode& n : objects) scene.meshes.push_back(read_object(n, base_dir));
   return scene;
@@ -288,6 +310,7 @@ Scene load_scene(const std::filesystem::path& file) {
   if (!in || std::filesystem::is_directory(file)) {
     throw InputError(file.string(), "", "cannot read the scene file");
   }
+  if (scene_gltf::is_gltf_file(file)) return scene_gltf::load_gltf(file);
   std::ostringstream text;
   text << in.rdbuf();
   return parse_scene(text.str(), file);
