@@ -3,6 +3,8 @@
 // checked here, each failure an InputError naming the element ("meshes[0].primitives[1]").
 // Section numbers are the glTF 2.0 specification's.
 #include "scene/gltf_scene.hpp"
+
+#include "core/warning.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/light_defaults.hpp"
 #include "scene/mesh_build.hpp"
@@ -219,6 +221,7 @@ private:
       for (glm::dvec3& q : positions) q = glm::dvec3(world * glm::dvec4(q, 1.0));
 
       Mesh out;
+      size_t skipped = 0;
       const auto normal = prim.attributes.find("NORMAL");
       if (normal != prim.attributes.end()) {
         const size_t a = checked_index(normal->second, m_.accessors.size(), key + ".attributes.NORMAL", "accessors");
@@ -234,7 +237,9 @@ private:
         for (size_t t = 0; t < indices.size(); t += 3) {
           glm::uvec3 tri(indices[t], indices[t + 1], indices[t + 2]);
           if (flip) std::swap(tri.y, tri.z);
-          if (!scene_mesh::is_degenerate(out.positions[tri.x], out.positions[tri.y], out.positions[tri.z]))
+          if (scene_mesh::is_degenerate(out.positions[tri.x], out.positions[tri.y], out.positions[tri.z]))
+            ++skipped;
+          else
             out.triangles.push_back(tri);
         }
       } else {
@@ -244,7 +249,10 @@ private:
           glm::vec3 c[3] = {glm::vec3(positions[indices[t]]), glm::vec3(positions[indices[t + 1]]),
                             glm::vec3(positions[indices[t + 2]])};
           if (flip) std::swap(c[1], c[2]);
-          if (scene_mesh::is_degenerate(c[0], c[1], c[2])) continue;
+          if (scene_mesh::is_degenerate(c[0], c[1], c[2])) {
+            ++skipped;
+            continue;
+          }
           const glm::vec3 f = scene_mesh::face_normal(c[0], c[1], c[2]);
           const uint32_t first = b.vertex(c[0], f);
           b.vertex(c[1], f);
@@ -254,6 +262,10 @@ private:
         out = b.take("");
       }
       if (out.triangles.empty()) fail(key, "has no triangle of non-zero area");
+      // As an OBJ's: exported meshes hold slivers; one warning counts them.
+      if (skipped > 0)
+        warn(file_, key + ": skipped " + std::to_string(skipped) + " degenerate triangle" + (skipped == 1 ? "" : "s") +
+                        " (zero area)");
       out.albedo = albedo(prim.material, key + ".material");
       out.name = label + (mesh.primitives.size() > 1 ? " primitive " + std::to_string(p) : "");
       out_.meshes.push_back(std::move(out));

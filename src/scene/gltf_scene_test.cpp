@@ -1,5 +1,6 @@
 // glTF scenes (docs/scene-format.md "glTF scenes"): unit conversions, node transforms,
 // equivalence with a JSON scene, the fog sources, and each malformed element's message.
+#include "core/warning.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/shapes.hpp"
 #include "scene/test_support.hpp"
@@ -17,6 +18,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 
 namespace airlight {
 namespace {
@@ -326,6 +328,26 @@ TEST(GltfScene, WithoutFogOrCameraTheMediumIsEmptyAndTheCameraFramesTheMeshes) {
   // The sphere just fills the 45° field: distance · sin(22.5°) = radius, from the front (+Z).
   EXPECT_NEAR(glm::distance(s.camera.position, centre) * std::sin(glm::radians(22.5f)), radius, 1e-5f);
   expect_vec(glm::normalize(s.camera.position - centre), glm::normalize(glm::vec3(0, 0.5f, 1)), 1e-6f);
+}
+
+// Zero-area triangles are skipped with one warning per primitive that counts them, as an OBJ's,
+// with normals given or not.
+TEST(GltfScene, DegenerateTrianglesAreSkippedWithAWarningThatCountsThem) {
+  const std::vector<glm::vec3> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const std::vector<uint16_t> tris = {0, 1, 2, 0, 2, 3, 0, 0, 1, 1, 2, 2};
+  for (const bool normals : {false, true}) {
+    Gltf g;
+    g.node({{"mesh", g.mesh(square, tris, normals ? std::vector<glm::vec3>(4, {0, 0, 1}) : std::vector<glm::vec3>{})}});
+    const fs::path file = g.write(normals ? "slivers_n" : "slivers");
+    std::ostringstream warnings;
+    std::ostream* previous = set_warning_stream(&warnings);
+    const Scene s = load_scene(file);
+    set_warning_stream(previous);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    EXPECT_EQ(s.meshes[0].triangles.size(), 2u);
+    EXPECT_EQ(warnings.str(), "airlight: warning: " + file.string() +
+                                  ": meshes[0].primitives[0]: skipped 2 degenerate triangles (zero area)\n");
+  }
 }
 
 // A scene file with "gltf" starts from the glTF's scene; its own keys replace the glTF's, and
