@@ -99,8 +99,8 @@ struct MethodInfo {
 
 // Every registered method, in the order of docs/design.md §3.
 const std::vector<MethodInfo>& registered_methods();
-// Throws InputError("--method", name) for an unknown method.
-const MethodInfo& find_method(const std::string& name);
+// Throws InputError(option, name) for an unknown method, listing the known ones.
+const MethodInfo& find_method(const std::string& name, const std::string& option = "--method");
 
 // L = L_surf·T + L_air, or one of its terms.
 Image select_pass(const FrameImages& frame, Pass pass);

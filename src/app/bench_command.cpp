@@ -85,12 +85,9 @@ Sweep parse_sweep(const std::string& text) {
 std::vector<const MethodInfo*> listed_methods(const std::vector<std::string>& names) {
   std::vector<const MethodInfo*> methods;
   for (const auto& name : names) {
-    const auto it = std::find_if(registered_methods().begin(), registered_methods().end(),
-                                 [&](const MethodInfo& m) { return m.name == name; });
-    if (it == registered_methods().end())
-      throw InputError("--methods", name, "unknown method (airlight list methods)");
+    const MethodInfo& method = find_method(name, "--methods");
     if (std::count(names.begin(), names.end(), name) > 1) throw InputError("--methods", name, "listed twice");
-    methods.push_back(&*it);
+    methods.push_back(&method);
   }
   return methods;
 }

@@ -82,6 +82,10 @@ TEST(Bench, BadArgumentsExitTwoNamingOptionAndKey) {
   expect_bad_argument("--methods raymarch,planes --set steps=8", "--set", "steps");
   expect_bad_argument("--methods raymarch --sizes 0x5", "--sizes", "0x5");
   EXPECT_FALSE(fs::exists(work_dir() / "bad.csv"));  // nothing ran
+  // An unknown method lists the known ones, as render's --method does.
+  EXPECT_EQ(run("--builtin teapot_spot --methods raymarch,bogus --csv " + (work_dir() / "u.csv").string()).err,
+            "airlight: error: --methods: bogus: unknown method (known: reference, raymarch, interleaved, planes, analytic, "
+            "shadow_planes, beam_volumes, hybrid_clip, hybrid, light_volume, sv_march)\n");
 }
 
 }  // namespace

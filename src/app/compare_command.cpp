@@ -51,13 +51,6 @@ struct Result {
   ImageError error;
 };
 
-// find_method's message names --method; compare's option is --methods.
-const MethodInfo& lookup(const std::string& name) {
-  for (const auto& info : registered_methods())
-    if (info.name == name) return info;
-  throw InputError("--methods", name, "unknown method (airlight list methods)");
-}
-
 // --set takes "method.key=value" only: with several methods a bare key would be
 // ambiguous, and a method missing from --methods is most likely a typo.
 void check_assignments(const std::vector<std::string>& assignments, const std::string& methods) {
@@ -79,7 +72,7 @@ Entry parse_entry(const std::string& text, const std::vector<std::string>& assig
   const std::string name = text.substr(0, colon);
   if (name.empty() || (colon != std::string::npos && colon + 1 == text.size()))
     throw InputError("--methods", text.empty() ? "(empty entry)" : text, "expected NAME or NAME:key=value;key=value, entries separated by ','");
-  Entry entry{&lookup(name), {}};
+  Entry entry{&find_method(name, "--methods"), {}};
   std::vector<std::string> own;
   for (const auto& a : assignments)
     if (a.substr(0, a.find('.')) == name) own.push_back(a);

@@ -127,6 +127,10 @@ TEST(Compare, BadArgumentsExitTwoNamingThem) {
   expect_bad_options("--methods raymarch --size 0x5", "--size", "0x5");
   EXPECT_EQ(run("compare --scene " + scene_file().string() + " --out x.png").status, 2);  // --methods is required
   expect_bad_options("--methods raymarch --exposure 0", "--exposure", "");
+  // An unknown method lists the known ones, as render's --method does.
+  EXPECT_EQ(run("compare --builtin teapot_spot --methods raymarch,bogus --out " + (work_dir() / "u.png").string()).err,
+            "airlight: error: --methods: bogus: unknown method (known: reference, raymarch, interleaved, planes, analytic, "
+            "shadow_planes, beam_volumes, hybrid_clip, hybrid, light_volume, sv_march)\n");
 }
 
 }  // namespace

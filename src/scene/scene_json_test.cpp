@@ -293,7 +293,7 @@ const BadCase kFormat[] = {
 // The message lists the keys valid where the unknown one is: a shape's own and every object's.
 const BadCase kUnknownKeys[] = {
     {"TopLevel", "/colour", "1", "colour",
-     "unknown key (known here: format, name, camera, medium, light_model, ambient, volumes, lights, objects)"},
+     "unknown key (known here: format, gltf, name, camera, medium, light_model, ambient, volumes, lights, objects)"},
     {"Camera", "/camera/zoom", "2", "camera.zoom",
      "unknown key (known here: position, look_at, up, fov_y_deg, near, far)"},
     {"Medium", "/medium/density", "1", "medium.density", "unknown key (known here: scattering, absorption, phase)"},
