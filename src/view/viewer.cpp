@@ -1,0 +1,359 @@
+#include "view/viewer.hpp"
+
+#include "app/method_settings.hpp"
+#include "core/image_io.hpp"
+#include "gpu/program.hpp"
+#include "view/camera_control.hpp"
+
+#include <airlight/engine.hpp>
+#include <airlight/error.hpp>
+
+#define GLFW_INCLUDE_NONE  // epoxy provides GL
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace airlight::view {
+
+struct Viewer::Targets {
+  int width = 0, height = 0;
+  gpu::Texture airlight, surface;  // RGBA32F: what the method writes through EngineTarget
+
+  void fit(int w, int h) {
+    if (w == width && h == height) return;
+    width = w;
+    height = h;
+    airlight = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, w, h);
+    surface = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, w, h);
+  }
+};
+
+namespace {
+
+// How long after the last camera move the reduced size is kept: mouse drags
+// deliver moves every frame or two, so a pause shorter than this is still moving.
+constexpr std::chrono::milliseconds settle_time{250};
+
+std::string glfw_error;
+
+void remember_glfw_error(int, const char* description) { glfw_error = description; }
+
+// GLFW needs an X display (or Wayland); without one there is no window to open.
+void init_glfw() {
+  glfwSetErrorCallback(remember_glfw_error);
+  if (glfwInit()) return;
+  throw Failure("view: no display to open a window on (" + glfw_error +
+                "); run it under a virtual X server: xvfb-run -s \"-screen 0 1280x800x24\" airlight view ...");
+}
+
+GLFWwindow* open_window(int width, int height) {
+  init_glfw();
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(width, height, "airlight view", nullptr, nullptr);
+  if (!window) {
+    glfwTerminate();
+    throw Failure("view: no OpenGL 4.5 core window (" + glfw_error +
+                  "); Mesa's llvmpipe gives one on any X server, e.g. under xvfb-run");
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(0);  // measure the method, not the display's refresh
+  return window;
+}
+
+bool same_view(const Camera& a, const Camera& b) {
+  return a.position == b.position && a.look_at == b.look_at && a.fov_y_deg == b.fov_y_deg;
+}
+
+const char* const pass_names[] = {"composite", "airlight", "surface"};
+const char* const curve_names[] = {"agx", "aces", "clamp"};
+const char* const phase_names[] = {"isotropic", "rayleigh", "henyey_greenstein", "schlick", "hazy", "murky"};
+const char* const light_type_names[] = {"point", "spot", "directional"};
+
+// A direction edited component by component, made unit again (a zero vector is refused).
+void edit_direction(const char* label, glm::vec3& direction) {
+  glm::vec3 d = direction;
+  if (ImGui::DragFloat3(label, &d.x, 0.01f, -1.0f, 1.0f) && glm::length(d) > 1e-3f) direction = glm::normalize(d);
+}
+
+bool edit_colour(const char* label, glm::vec3& colour, float speed) {
+  return ImGui::DragFloat3(label, &colour.x, speed, 0.0f, 1e9f, "%.4g", ImGuiSliderFlags_AlwaysClamp);
+}
+
+}  // namespace
+
+std::vector<std::string> viewer_methods() {
+  std::vector<std::string> names;
+  // The CPU reference renders seconds per frame: the issue keeps it to the background.
+  for (const MethodInfo& m : registered_methods())
+    if (m.name != "reference") names.push_back(m.name);
+  return names;
+}
+
+Viewer::Viewer(ViewOptions options)
+    : options_(std::move(options)), scene_(options_.scene), full_(std::make_unique<Targets>()),
+      reduced_(std::make_unique<Targets>()) {
+  const MethodInfo& info = find_method(options_.method);
+  const auto methods = viewer_methods();
+  if (std::find(methods.begin(), methods.end(), info.name) == methods.end())
+    throw InputError("--method", info.name, "the viewer shows GPU methods; the CPU reference renders only for the error view");
+  const Settings settings = app::method_settings(info, options_.assignments);
+  window_ = open_window(options_.width, options_.height);
+  use_current_gl_context();
+  display_ = std::make_unique<Display>();
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+  inputs_ = frame_inputs(scene_, options_.width, options_.height);
+  last_camera_ = inputs_.camera;
+  last_frame_ = std::chrono::steady_clock::now();
+  create_method(info.name, settings);
+}
+
+Viewer::~Viewer() {
+  method_.reset();  // its GL objects go while the context is current
+  full_.reset();
+  reduced_.reset();
+  display_.reset();
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+bool Viewer::open() const { return !glfwWindowShouldClose(window_); }
+
+void Viewer::quit() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+
+void Viewer::create_method(const std::string& name, const Settings& settings) {
+  const MethodInfo& info = find_method(name);
+  auto method = info.create(settings);
+  method->prepare(scene_);
+  method_ = std::move(method);
+  method_name_ = info.name;
+  settings_ = settings;
+  widgets_ = setting_widgets(info.settings);
+  status_ = "prepared " + method_name_;
+}
+
+void Viewer::switch_method(const std::string& name) {
+  const MethodInfo& info = find_method(name);
+  create_method(info.name, Settings(info.settings));
+}
+
+void Viewer::set_setting(const std::string& label, const std::string& value) {
+  Settings changed = settings_;
+  set_widget(widgets_, changed, label, value);
+  create_method(method_name_, changed);
+}
+
+void Viewer::frame() {
+  const auto now = std::chrono::steady_clock::now();
+  const float dt = std::chrono::duration<float>(now - last_frame_).count();
+  frame_s_ = dt;
+  last_frame_ = now;
+  glfwPollEvents();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  if (options_.interactive) handle_input(dt);
+  if (!same_view(inputs_.camera, last_camera_)) last_move_ = now;
+  last_camera_ = inputs_.camera;
+
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  if (width < 1 || height < 1) return;  // minimized
+  const bool moving = progressive_ && now - last_move_ < settle_time;
+  const float scale = moving ? moving_scale_ : 1.0f;
+  try {
+    render(std::max(1, static_cast<int>(std::lround(width * scale))),
+           std::max(1, static_cast<int>(std::lround(height * scale))), moving ? *reduced_ : *full_);
+  } catch (const std::runtime_error& e) {
+    report(e);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  if (shown_) display_->draw(shown_->airlight.id(), shown_->surface.id(), 0, 0, width, height, pass_, tone_);
+  draw_panels();
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(window_);
+}
+
+// The method's frame into the viewer's textures at width × height, through the
+// engine path: L_air and airlight's own L_surf·T(d), nothing read back.
+void Viewer::render(int width, int height, Targets& target) {
+  target.fit(width, height);
+  FrameInputs inputs = inputs_;
+  inputs.width = width;
+  inputs.height = height;
+  inputs.surface = true;
+  EngineFrame engine;
+  engine.target.airlight = target.airlight.id();
+  engine.target.surface = target.surface.id();
+  const auto start = std::chrono::steady_clock::now();
+  shown_ = nullptr;  // until this frame is complete
+  method_->render_frame(inputs, engine);
+  glFinish();  // the frame's time is until its last pixel
+  render_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  numbers_ = method_->numbers();
+  shown_ = &target;
+}
+
+void Viewer::handle_input(float dt) {
+  const ImGuiIO& io = ImGui::GetIO();
+  Camera& camera = inputs_.camera;
+  if (!io.WantCaptureMouse) {
+    const glm::vec2 d(io.MouseDelta.x, io.MouseDelta.y);
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) camera = orbit(camera, 0.3f * d.x, 0.3f * d.y);
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) camera = look(camera, -0.2f * d.x, -0.2f * d.y);
+    if (io.MouseWheel != 0.0f) camera = dolly(camera, std::pow(0.9f, io.MouseWheel));
+  }
+  if (io.WantCaptureKeyboard) return;
+  auto key = [&](int k) { return glfwGetKey(window_, k) == GLFW_PRESS ? 1.0f : 0.0f; };
+  const glm::vec3 move(key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
+                       key(GLFW_KEY_W) - key(GLFW_KEY_S));
+  // Metres per second: a tenth of the distance to the target, so small and large scenes both fly.
+  const float speed = 0.5f * glm::distance(camera.position, camera.look_at) * (key(GLFW_KEY_LEFT_SHIFT) ? 4.0f : 1.0f);
+  if (move != glm::vec3(0.0f)) camera = fly(camera, move * speed * std::min(dt, 0.1f));
+}
+
+void Viewer::screenshot(const std::filesystem::path& file) {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  render(width, height, *full_);  // full size, whatever the last frame was
+  FrameImages images;
+  images.airlight = gpu::read_image(shown_->airlight, width, height);
+  images.surface = gpu::read_image(shown_->surface, width, height);
+  write_image(select_pass(images, pass_), file, tone_);
+  status_ = "wrote " + file.string();
+}
+
+void Viewer::save_scene(const std::filesystem::path& file) const {
+  airlight::save_scene(posed_scene(scene_, inputs_), file);
+}
+
+// Called from a catch block: a script stops at the first error (rethrown), a
+// person sees it in the panel and keeps the last good image.
+void Viewer::report(const std::exception& e) {
+  if (!options_.interactive) throw;
+  status_ = e.what();
+}
+
+// ---- panels -------------------------------------------------------------------
+
+void Viewer::draw_panels() {
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("airlight");
+  try {
+    if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) method_panel();
+    if (ImGui::CollapsingHeader("Numbers", ImGuiTreeNodeFlags_DefaultOpen)) numbers_panel();
+    if (ImGui::CollapsingHeader("Camera")) camera_panel();
+    if (ImGui::CollapsingHeader("Lights")) light_panel();
+    if (ImGui::CollapsingHeader("Medium")) medium_panel();
+    if (ImGui::CollapsingHeader("Capture")) capture_panel();
+  } catch (const std::runtime_error& e) {
+    report(e);
+  }
+  if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
+  ImGui::End();
+}
+
+void Viewer::method_panel() {
+  if (ImGui::BeginCombo("method", method_name_.c_str())) {
+    for (const std::string& name : viewer_methods())
+      if (ImGui::Selectable(name.c_str(), name == method_name_) && name != method_name_) switch_method(name);
+    ImGui::EndCombo();
+  }
+  Settings edited = settings_;
+  if (draw_setting_widgets(widgets_, edited)) create_method(method_name_, edited);
+  int pass = static_cast<int>(pass_);
+  if (ImGui::Combo("pass", &pass, pass_names, 3)) pass_ = static_cast<Pass>(pass);
+  ImGui::SliderFloat("exposure", &tone_.exposure, 1e-3f, 1e3f, "%.3g", ImGuiSliderFlags_Logarithmic);
+  int curve = static_cast<int>(tone_.curve);
+  if (ImGui::Combo("tone curve", &curve, curve_names, 3)) tone_.curve = static_cast<ToneCurve>(curve);
+  ImGui::Checkbox("reduced size while moving", &progressive_);
+  ImGui::SliderFloat("moving scale", &moving_scale_, 0.125f, 1.0f, "%.3f");
+}
+
+void Viewer::numbers_panel() {
+  ImGui::Text("frame %.1f ms (%.1f fps), method %.1f ms at %dx%d", 1e3 * frame_s_,
+              frame_s_ > 0 ? 1.0 / frame_s_ : 0.0, 1e3 * render_s_, shown_ ? shown_->width : 0,
+              shown_ ? shown_->height : 0);
+  for (const PassTime& t : numbers_.times) ImGui::Text("  %-10s %8.2f ms", t.pass.c_str(), 1e3 * t.seconds);
+  for (const auto& [name, value] : numbers_.stats) ImGui::Text("  %s %.6g", name.c_str(), value);
+}
+
+void Viewer::camera_panel() {
+  ImGui::TextWrapped("left drag: orbit; right drag: look; W/A/S/D/Q/E: fly (shift: faster); wheel: dolly");
+  Camera& c = inputs_.camera;
+  ImGui::SliderFloat("field of view", &c.fov_y_deg, 5.0f, 120.0f, "%.1f deg");
+  ImGui::DragFloat3("position", &c.position.x, 0.05f);
+  glm::vec3 target = c.look_at;
+  if (ImGui::DragFloat3("look at", &target.x, 0.05f) && target != c.position) c.look_at = target;
+  if (ImGui::Button("reset to the scene's camera")) reset_camera();
+}
+
+void Viewer::light_panel() {
+  auto& lights = inputs_.lights;
+  if (lights.empty()) {
+    ImGui::Text("the scene has no lights");
+    return;
+  }
+  selected_light_ = std::clamp(selected_light_, 0, static_cast<int>(lights.size()) - 1);
+  for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
+    const std::string name = std::to_string(i) + ": " + light_type_names[static_cast<int>(lights[i].type)];
+    if (ImGui::Selectable(name.c_str(), i == selected_light_)) selected_light_ = i;
+  }
+  Light& light = lights[selected_light_];
+  if (light.type != LightType::directional) ImGui::DragFloat3("light position", &light.position.x, 0.05f);
+  if (light.type != LightType::point) edit_direction("light direction", light.direction);
+  if (light.type == LightType::spot) {
+    ImGui::SliderFloat("cone", &light.cone_deg, 0.5f, 180.0f, "%.1f deg");
+    ImGui::SliderFloat("edge", &light.edge_deg, 0.0f, light.cone_deg, "%.1f deg");
+  }
+  if (light.type == LightType::directional)
+    edit_colour("irradiance", light.irradiance, 0.05f);
+  else
+    edit_colour("intensity", light.intensity, 1.0f);
+}
+
+void Viewer::medium_panel() {
+  Medium& m = inputs_.medium;
+  edit_colour("scattering", m.sigma_s, 0.001f);
+  edit_colour("absorption", m.sigma_a, 0.001f);
+  for (size_t i = 0; i < m.phase.lobes.size(); ++i) {
+    PhaseLobe& lobe = m.phase.lobes[i];
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::Text("phase lobe %zu, weight %.3g", i, lobe.weight);
+    int type = static_cast<int>(lobe.type);
+    if (ImGui::Combo("phase", &type, phase_names, 6)) lobe.type = static_cast<PhaseType>(type);
+    if (lobe.type == PhaseType::henyey_greenstein || lobe.type == PhaseType::schlick)
+      ImGui::SliderFloat("g", &lobe.g, -0.99f, 0.99f);
+    ImGui::PopID();
+  }
+}
+
+void Viewer::capture_panel() {
+  ImGui::InputText("image", screenshot_path_, sizeof screenshot_path_);
+  if (ImGui::Button("screenshot (.png tone-mapped, .exr linear)")) screenshot(screenshot_path_);
+  ImGui::InputText("scene", scene_path_, sizeof scene_path_);
+  if (ImGui::Button("save scene (.json)")) {
+    save_scene(scene_path_);
+    status_ = std::string("saved ") + scene_path_;
+  }
+}
+
+}  // namespace airlight::view
