@@ -6,6 +6,8 @@ namespace airlight::view {
 
 namespace {
 
+constexpr int display_values = 3;  // display.frag.glsl's `pass` beyond the three of Pass
+
 gpu::Sampler make_sampler(GLenum filter) {
   GLuint sampler = 0;
   glCreateSamplers(1, &sampler);
@@ -29,10 +31,20 @@ Display::Display()
 
 void Display::draw(GLuint airlight, GLuint surface, int x, int y, int width, int height, Pass pass,
                    const ToneMap& tone) const {
+  run(airlight, surface, x, y, width, height, static_cast<int>(pass), tone);
+}
+
+void Display::draw_display_values(GLuint image, int x, int y, int width, int height) const {
+  run(image, image, x, y, width, height, display_values, {});
+}
+
+// `mode`: a Pass, or display_values.
+void Display::run(GLuint airlight, GLuint surface, int x, int y, int width, int height, int mode,
+                  const ToneMap& tone) const {
   const gpu::Program& program = gpu::cached_program(
       {{GL_VERTEX_SHADER, "view/display.vert.glsl"}, {GL_FRAGMENT_SHADER, "view/display.frag.glsl"}});
   glUseProgram(program.id());
-  gpu::set_uniform(program, "pass", static_cast<int>(pass));
+  gpu::set_uniform(program, "pass", mode);
   gpu::set_uniform(program, "exposure", tone.exposure);
   gpu::set_uniform(program, "curve", static_cast<int>(tone.curve));
   gpu::set_uniform(program, "viewport", glm::vec4(x, y, width, height));

@@ -6,7 +6,8 @@
 // normalized position, through the nearest or bilinear sampler Display binds.
 layout(binding = 0) uniform sampler2D airlight_image;
 layout(binding = 1) uniform sampler2D surface_image;
-uniform int pass;        // 0 composite, 1 airlight, 2 surface (airlight::Pass)
+uniform int pass;        // 0 composite, 1 airlight, 2 surface (airlight::Pass); 3: airlight_image
+                         // holds display values (a heat map), shown as they are
 uniform float exposure;
 uniform int curve;       // 0 agx, 1 aces, 2 clamp (airlight::ToneCurve)
 uniform vec4 viewport;  // x, y, width, height in window pixels
@@ -56,6 +57,10 @@ vec3 tone_map(vec3 radiance) {
 void main() {
   vec2 uv = (gl_FragCoord.xy - viewport.xy) / viewport.zw;
   vec3 l_air = texture(airlight_image, uv).rgb, l_surf = texture(surface_image, uv).rgb;
+  if (pass == 3) {
+    colour = vec4(l_air, 1.0);
+    return;
+  }
   vec3 radiance = pass == 1 ? l_air : pass == 2 ? l_surf : l_air + l_surf;
   colour = vec4(tone_map(radiance), 1.0);
 }

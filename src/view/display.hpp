@@ -16,8 +16,12 @@ public:
   // at its size, stretched bilinearly when smaller (progressive frames).
   void draw(GLuint airlight, GLuint surface, int x, int y, int width, int height, Pass pass,
             const ToneMap& tone) const;
+  // An image of display values (sRGB-encoded, e.g. a heat map) as it is.
+  void draw_display_values(GLuint image, int x, int y, int width, int height) const;
 
 private:
+  void run(GLuint airlight, GLuint surface, int x, int y, int width, int height, int mode, const ToneMap& tone) const;
+
   gpu::VertexArray empty_;  // core profile draws need a vertex array, even with no attributes
   gpu::Sampler nearest_, bilinear_;
 };

@@ -135,6 +135,13 @@ Pass pass_named(const std::string& name) {
   throw std::invalid_argument("pass is composite, airlight or surface, not '" + name + "'");
 }
 
+Viewer::ErrorView error_view_named(const std::string& name) {
+  if (name == "off") return Viewer::ErrorView::off;
+  if (name == "split") return Viewer::ErrorView::split;
+  if (name == "heat") return Viewer::ErrorView::heat;
+  throw std::invalid_argument("error is off, split or heat, not '" + name + "'");
+}
+
 // Returns false at `quit`.
 bool run_line(Viewer& v, Words& w) {
   const std::string command = w.word("command");
@@ -155,7 +162,13 @@ bool run_line(Viewer& v, Words& w) {
     const int n = w.done() ? 1 : static_cast<int>(w.number("frame count"));
     for (int i = 0; i < n; ++i) v.frame();
   } else if (command == "measure") measure(v, static_cast<int>(w.number("frame count")));
-  else if (command == "screenshot") v.screenshot(w.word("file"));
+  else if (command == "error") v.set_error_view(error_view_named(w.word("error view")));
+  else if (command == "reference") {
+    const double e = v.wait_for_reference();
+    std::printf("%s: rRMSE %.6f against the reference\n", v.method().c_str(), e);
+    std::fflush(stdout);
+  } else if (command == "screenshot") v.screenshot(w.word("file"));
+  else if (command == "window") v.save_window(w.word("file"));
   else if (command == "save") v.save_scene(w.word("file"));
   else if (command == "quit") {
     v.quit();

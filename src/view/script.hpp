@@ -10,7 +10,10 @@
 //   medium scattering R G B | absorption R G B | phase TYPE [G]
 //   frame [N]                        render and show N frames (default 1)
 //   measure N                        N frames at rest, then N orbiting: prints ms per frame
+//   error off|split|heat             the error view against the reference
+//   reference                        draw frames until the reference of this view is done: prints rRMSE
 //   screenshot FILE                  .png tone-mapped, .exr or .pfm linear
+//   window FILE                      the next frame as the window shows it, panels included (PNG)
 //   save FILE                        the scene as edited, airlight-scene/1 JSON
 //   quit
 //

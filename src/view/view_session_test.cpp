@@ -149,9 +149,10 @@ TEST(ViewSession, ScriptedSessionSavesWhatRenderReproduces) {
   EXPECT_TRUE(fs::exists(dir / "final.png"));
 
   // The saved scene renders to the screenshot: the same method, settings and
-  // inputs on the same llvmpipe. The scene's floats are written exactly, but its
-  // meshes come back from OBJ with their vertices renumbered, which may move a
-  // rasterizer tie at a triangle edge; 0.5 % covers a few such pixels.
+  // inputs on the same llvmpipe. The scene's floats are written exactly; its
+  // meshes come back from OBJ with their vertices renumbered and their normals
+  // renormalized (an ulp), which moves a few pixels by float rounding: measured
+  // rRMSE 1e-6; 1e-4 would still catch any pose, light or medium not saved.
   const Outcome r = run_airlight("render --scene " + (dir / "saved" / "scene.json").string() +
                                  " --method raymarch --set steps=32 --size 256x192 --out " +
                                  (dir / "render.exr").string());
@@ -159,10 +160,29 @@ TEST(ViewSession, ScriptedSessionSavesWhatRenderReproduces) {
   const ImageError e = compare_images(read_image(dir / "final.exr"), read_image(dir / "render.exr"));
   std::printf("viewer screenshot against airlight render of the saved scene: rRMSE %.6f, max abs %.6f\n",
               e.rel_rmse, e.max_abs);
-  EXPECT_LT(e.rel_rmse, 0.005);
+  EXPECT_LT(e.rel_rmse, 1e-4);
   // The edits are in the file and the image: not the scene as built in.
   const ImageError moved = compare_images(read_image(dir / "final.exr"), read_image(dir / "raymarch.exr"));
   EXPECT_GT(moved.rel_rmse, 0.05);
+}
+
+// The error view: the reference renders in the background and the method's
+// error against it is measured again when a setting changes. raymarch at its
+// defaults misses the reference's composite by a few per cent here (the floor's
+// 1024² shadow-map edges, 64 samples); 4 samples are clearly worse.
+TEST(ViewSession, ErrorAgainstTheBackgroundReference) {
+  REQUIRE_XVFB();
+  const fs::path script = write_file("error.txt", "error heat\nreference\nset steps 4\nreference\nquit\n");
+  const Outcome o = run_airlight("view --builtin teapot_spot --size 96x72 --script " + script.string(),
+                                 "DISPLAY=" + xvfb().display());
+  ASSERT_EQ(o.status, 0) << o.err;
+  double defaults = 0.0, few = 0.0;
+  ASSERT_EQ(std::sscanf(o.out.c_str(), "raymarch: rRMSE %lf against the reference\nraymarch: rRMSE %lf", &defaults, &few),
+            2)
+      << o.out;
+  std::printf("rRMSE against the reference: steps=64 %.4f, steps=4 %.4f\n", defaults, few);
+  EXPECT_LT(defaults, 0.1);
+  EXPECT_GT(few, defaults);
 }
 
 TEST(ViewSession, ScriptErrorsNameTheLine) {

@@ -1,6 +1,8 @@
 #include "view/viewer.hpp"
 
+#include "app/contact_sheet.hpp"
 #include "app/method_settings.hpp"
+#include "core/metrics.hpp"
 #include "core/image_io.hpp"
 #include "gpu/program.hpp"
 #include "view/camera_control.hpp"
@@ -16,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace airlight::view {
 
@@ -66,6 +69,27 @@ GLFWwindow* open_window(int width, int height) {
   glfwMakeContextCurrent(window);
   glfwSwapInterval(0);  // measure the method, not the display's refresh
   return window;
+}
+
+// An image as an RGBA32F texture (GL's rows bottom first).
+gpu::Texture upload(const Image& image) {
+  gpu::Texture texture = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, image.width, image.height);
+  std::vector<glm::vec3> rows;
+  rows.reserve(image.pixels.size());
+  for (int y = image.height - 1; y >= 0; --y)
+    for (int x = 0; x < image.width; ++x) rows.push_back(image.at(x, y));
+  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGB, GL_FLOAT, rows.data());
+  return texture;
+}
+
+// |method − reference|, the largest over RGB, through inferno up to `top` (as compare's heat maps).
+Image heat_map(const Image& method, const Image& reference, double top) {
+  Image heat(method.width, method.height);
+  for (size_t k = 0; k < heat.pixels.size(); ++k) {
+    const glm::vec3 d = glm::abs(method.pixels[k] - reference.pixels[k]);
+    heat.pixels[k] = glm::vec3(app::inferno(std::max({d.r, d.g, d.b}) / top));
+  }
+  return heat;
 }
 
 bool same_view(const Camera& a, const Camera& b) {
@@ -120,6 +144,7 @@ Viewer::Viewer(ViewOptions options)
 }
 
 Viewer::~Viewer() {
+  reference_.reset();
   method_.reset();  // its GL objects go while the context is current
   full_.reset();
   reduced_.reset();
@@ -181,13 +206,19 @@ void Viewer::frame() {
   } catch (const std::runtime_error& e) {
     report(e);
   }
+  try {
+    update_reference(width, height);
+  } catch (const std::runtime_error& e) {
+    report(e);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  if (shown_) display_->draw(shown_->airlight.id(), shown_->surface.id(), 0, 0, width, height, pass_, tone_);
+  draw_image(width, height);
   draw_panels();
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (!window_capture_.empty()) write_window(width, height);
   glfwSwapBuffers(window_);
 }
 
@@ -211,15 +242,29 @@ void Viewer::render(int width, int height, Targets& target) {
   shown_ = &target;
 }
 
+void Viewer::handle_mouse() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureMouse) return;
+  // The split view's divider is grabbed within 6 pixels; elsewhere a drag turns the camera.
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging_divider_ = false;
+  if (error_view_ == ErrorView::split && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
+      std::abs(io.MousePos.x - divider_ * io.DisplaySize.x) < 6.0f)
+    dragging_divider_ = true;
+  if (dragging_divider_) {
+    divider_ = std::clamp(io.MousePos.x / io.DisplaySize.x, 0.0f, 1.0f);
+    return;
+  }
+  Camera& camera = inputs_.camera;
+  const glm::vec2 d(io.MouseDelta.x, io.MouseDelta.y);
+  if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) camera = orbit(camera, 0.3f * d.x, 0.3f * d.y);
+  if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) camera = look(camera, -0.2f * d.x, -0.2f * d.y);
+  if (io.MouseWheel != 0.0f) camera = dolly(camera, std::pow(0.9f, io.MouseWheel));
+}
+
 void Viewer::handle_input(float dt) {
   const ImGuiIO& io = ImGui::GetIO();
   Camera& camera = inputs_.camera;
-  if (!io.WantCaptureMouse) {
-    const glm::vec2 d(io.MouseDelta.x, io.MouseDelta.y);
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) camera = orbit(camera, 0.3f * d.x, 0.3f * d.y);
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) camera = look(camera, -0.2f * d.x, -0.2f * d.y);
-    if (io.MouseWheel != 0.0f) camera = dolly(camera, std::pow(0.9f, io.MouseWheel));
-  }
+  handle_mouse();
   if (io.WantCaptureKeyboard) return;
   auto key = [&](int k) { return glfwGetKey(window_, k) == GLFW_PRESS ? 1.0f : 0.0f; };
   const glm::vec3 move(key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
@@ -238,6 +283,116 @@ void Viewer::screenshot(const std::filesystem::path& file) {
   images.surface = gpu::read_image(shown_->surface, width, height);
   write_image(select_pass(images, pass_), file, tone_);
   status_ = "wrote " + file.string();
+}
+
+// ---- the error against the reference --------------------------------------------
+
+// A reference of the view as it is now: started once the view rests at full
+// size, cancelled when it moves or changes, compared when done.
+void Viewer::update_reference(int width, int height) {
+  if (error_view_ == ErrorView::off || shown_ != full_.get()) {
+    reference_.reset();
+    compared_.clear();
+    return;
+  }
+  const std::uint64_t key = view_key(inputs_, width, height);
+  if (!reference_ || key != reference_key_) {
+    reference_.reset();  // cancels the old view's
+    reference_ = std::make_unique<ReferenceJob>(posed_scene(scene_, inputs_), width, height);
+    reference_key_ = key;
+    compared_.clear();
+  }
+  if (!reference_->finished()) return;
+  if (!reference_->error().empty()) throw Failure("reference: " + reference_->error());
+  compare_with_reference(width, height);
+}
+
+// The method's full-size frame read back once per method, settings and pass.
+std::string Viewer::comparison() const {
+  return method_name_ + " " + settings_.describe() + " " + pass_names[static_cast<int>(pass_)];
+}
+
+void Viewer::compare_with_reference(int width, int height) {
+  const std::string what = comparison();
+  if (what == compared_) return;
+  FrameImages frame;
+  frame.airlight = gpu::read_image(full_->airlight, width, height);
+  frame.surface = gpu::read_image(full_->surface, width, height);
+  const Image method = select_pass(frame, pass_);
+  const reference::Images& r = reference_->images();
+  const Image& reference = pass_ == Pass::airlight ? r.airlight : pass_ == Pass::surface ? r.surface : r.composite;
+  rel_rmse_ = compare_images(method, reference).rel_rmse;
+  const app::HeatScale scale = app::heat_scale({{"reference", "", "", 0.0, 0.0, &reference},
+                                                {method_name_, "", "", 0.0, 0.0, &method}});
+  heat_scale_ = app::describe(scale);
+  heat_ = upload(heat_map(method, reference, scale.top));
+  reference_airlight_ = upload(r.airlight);
+  reference_surface_ = upload(r.surface);
+  compared_ = what;
+}
+
+void Viewer::draw_image(int width, int height) {
+  if (!shown_) return;
+  const bool compared = !compared_.empty();
+  if (error_view_ == ErrorView::heat && compared) {
+    display_->draw_display_values(heat_.id(), 0, 0, width, height);
+    return;
+  }
+  display_->draw(shown_->airlight.id(), shown_->surface.id(), 0, 0, width, height, pass_, tone_);
+  if (error_view_ != ErrorView::split || !compared) return;
+  const int x = static_cast<int>(std::lround(divider_ * width));
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x, 0, width - x, height);
+  display_->draw(reference_airlight_.id(), reference_surface_.id(), 0, 0, width, height, pass_, tone_);
+  glDisable(GL_SCISSOR_TEST);
+  ImGui::GetBackgroundDrawList()->AddLine(ImVec2(static_cast<float>(x), 0.0f),
+                                          ImVec2(static_cast<float>(x), static_cast<float>(height)),
+                                          IM_COL32(255, 255, 255, 160));
+}
+
+double Viewer::wait_for_reference() {
+  if (error_view_ == ErrorView::off) error_view_ = ErrorView::split;
+  for (frame(); compared_ != comparison(); frame())
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // leave the worker the cores
+  return rel_rmse_;
+}
+
+void Viewer::error_panel() {
+  int view = static_cast<int>(error_view_);
+  if (ImGui::Combo("error view", &view, "off\0reference right of the divider\0heat map |method - reference|\0"))
+    error_view_ = static_cast<ErrorView>(view);
+  if (error_view_ == ErrorView::off) return;
+  if (!reference_) {
+    ImGui::Text("the reference starts when the view rests");
+  } else if (!reference_->finished()) {
+    ImGui::ProgressBar(reference_->progress(), ImVec2(-1.0f, 0.0f), "reference (CPU, in the background)");
+  } else if (!compared_.empty()) {
+    ImGui::Text("rRMSE %.4f (%s), reference %.1f s", rel_rmse_, pass_names[static_cast<int>(pass_)],
+                reference_->seconds());
+    if (error_view_ == ErrorView::heat) ImGui::TextWrapped("heat map: %s", heat_scale_.c_str());
+  }
+  if (error_view_ == ErrorView::split) ImGui::SliderFloat("divider", &divider_, 0.0f, 1.0f);
+}
+
+void Viewer::save_window(const std::filesystem::path& file) {
+  window_capture_ = file;
+  frame();
+}
+
+// The back buffer holds display values; decoded to linear, they come back
+// through the PNG writer's clamp curve as they were (within 8-bit rounding).
+void Viewer::write_window(int width, int height) {
+  std::vector<unsigned char> rgb(3 * static_cast<size_t>(width) * height);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+  Image image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 3; ++c)
+        image.at(x, height - 1 - y)[c] = srgb_to_linear(rgb[3 * (static_cast<size_t>(y) * width + x) + c] / 255.0f);
+  write_image(image, window_capture_, ToneMap{1.0f, ToneCurve::clamp});
+  window_capture_.clear();
 }
 
 void Viewer::save_scene(const std::filesystem::path& file) const {
@@ -294,6 +449,7 @@ void Viewer::numbers_panel() {
               shown_ ? shown_->height : 0);
   for (const PassTime& t : numbers_.times) ImGui::Text("  %-10s %8.2f ms", t.pass.c_str(), 1e3 * t.seconds);
   for (const auto& [name, value] : numbers_.stats) ImGui::Text("  %s %.6g", name.c_str(), value);
+  error_panel();
 }
 
 void Viewer::camera_panel() {

@@ -9,6 +9,7 @@
 // same operations the panels do.
 #include "gpu/gl.hpp"
 #include "view/display.hpp"
+#include "view/reference_job.hpp"
 #include "view/setting_widgets.hpp"
 
 #include "core/tonemap.hpp"
@@ -16,6 +17,7 @@
 #include <airlight/scene.hpp>
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -61,13 +63,29 @@ public:
   void reset_camera() { inputs_.camera = scene_.camera; }
   // The image shown at full size: PNG tone-mapped as the window shows it, EXR or PFM linear.
   void screenshot(const std::filesystem::path& file);
+  // The next frame as the window shows it, panels included, as PNG.
+  void save_window(const std::filesystem::path& file);
   // The scene as edited (camera, lights, medium) as airlight-scene/1 JSON.
   void save_scene(const std::filesystem::path& file) const;
+
+  // The error against the reference (rendered in the background once the view
+  // rests): the reference right of a divider, or a heat map of |method − reference|.
+  enum class ErrorView { off, split, heat };
+  void set_error_view(ErrorView view) { error_view_ = view; }
+  // Draws frames until the reference of this view is done; the shown pass's rRMSE against it.
+  double wait_for_reference();
 
 private:
   struct Targets;
   void create_method(const std::string& name, const Settings& settings);
   void handle_input(float dt);
+  void handle_mouse();
+  void update_reference(int width, int height);
+  std::string comparison() const;  // what the error is of: method, settings, pass
+  void compare_with_reference(int width, int height);
+  void draw_image(int width, int height);
+  void error_panel();
+  void write_window(int width, int height);
   void render(int width, int height, Targets& target);
   void draw_panels();
   void camera_panel();
@@ -99,10 +117,21 @@ private:
   std::chrono::steady_clock::time_point last_move_{};
   Camera last_camera_;
 
+  ErrorView error_view_ = ErrorView::off;
+  std::unique_ptr<ReferenceJob> reference_;
+  std::uint64_t reference_key_ = 0;
+  gpu::Texture reference_airlight_, reference_surface_, heat_;
+  std::string compared_;  // the method, settings and pass the error shows; empty: not compared yet
+  double rel_rmse_ = 0.0;
+  std::string heat_scale_;
+  float divider_ = 0.5f;
+  bool dragging_divider_ = false;
+
   int selected_light_ = 0;
   double frame_s_ = 0.0, render_s_ = 0.0;
   FrameNumbers numbers_;
   std::string status_;
+  std::filesystem::path window_capture_;  // written by the next frame before it is swapped
   char screenshot_path_[256] = "airlight_view.png", scene_path_[256] = "airlight_view.json";
   std::chrono::steady_clock::time_point last_frame_;
 };
