@@ -168,6 +168,7 @@ void Viewer::create_method(const std::string& name, const Settings& settings) {
   method_name_ = info.name;
   settings_ = settings;
   widgets_ = setting_widgets(info.settings);
+  ++method_generation_;
   status_ = "prepared " + method_name_;
 }
 
@@ -183,34 +184,23 @@ void Viewer::set_setting(const std::string& label, const std::string& value) {
 }
 
 void Viewer::frame() {
+  // Nothing to redraw and no reference running: wait for input rather than spin.
+  const bool waiting = idle_ && !(reference_ && !reference_->finished());
+  waiting ? glfwWaitEventsTimeout(0.1) : glfwPollEvents();
   const auto now = std::chrono::steady_clock::now();
-  const float dt = std::chrono::duration<float>(now - last_frame_).count();
-  frame_s_ = dt;
+  frame_s_ = std::chrono::duration<double>(now - last_frame_).count();
   last_frame_ = now;
-  glfwPollEvents();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
-  if (options_.interactive) handle_input(dt);
+  if (options_.interactive) handle_input(static_cast<float>(frame_s_));
   if (!same_view(inputs_.camera, last_camera_)) last_move_ = now;
   last_camera_ = inputs_.camera;
 
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_, &width, &height);
   if (width < 1 || height < 1) return;  // minimized
-  const bool moving = progressive_ && now - last_move_ < settle_time;
-  const float scale = moving ? moving_scale_ : 1.0f;
-  try {
-    render(std::max(1, static_cast<int>(std::lround(width * scale))),
-           std::max(1, static_cast<int>(std::lround(height * scale))), moving ? *reduced_ : *full_);
-  } catch (const std::runtime_error& e) {
-    report(e);
-  }
-  try {
-    update_reference(width, height);
-  } catch (const std::runtime_error& e) {
-    report(e);
-  }
+  render_if_changed(width, height, progressive_ && now - last_move_ < settle_time);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
@@ -220,6 +210,29 @@ void Viewer::frame() {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   if (!window_capture_.empty()) write_window(width, height);
   glfwSwapBuffers(window_);
+}
+
+// Renders unless the last frame already shows these inputs at this size with
+// this method (a person looking at a still view); a script renders every frame,
+// so that `measure` times the method at rest.
+void Viewer::render_if_changed(int width, int height, bool moving) {
+  const float scale = moving ? moving_scale_ : 1.0f;
+  const int w = std::max(1, static_cast<int>(std::lround(width * scale)));
+  const int h = std::max(1, static_cast<int>(std::lround(height * scale)));
+  Targets& target = moving ? *reduced_ : *full_;
+  const std::uint64_t key = view_key(inputs_, w, h);
+  idle_ = options_.interactive && key == rendered_key_ && method_generation_ == rendered_generation_ &&
+          shown_ == &target;
+  try {
+    if (!idle_) {
+      rendered_key_ = key;
+      rendered_generation_ = method_generation_;
+      render(w, h, target);
+    }
+    update_reference(width, height);
+  } catch (const std::runtime_error& e) {
+    report(e);
+  }
 }
 
 // The method's frame into the viewer's textures at width × height, through the
@@ -444,9 +457,13 @@ void Viewer::method_panel() {
 }
 
 void Viewer::numbers_panel() {
-  ImGui::Text("frame %.1f ms (%.1f fps), method %.1f ms at %dx%d", 1e3 * frame_s_,
-              frame_s_ > 0 ? 1.0 / frame_s_ : 0.0, 1e3 * render_s_, shown_ ? shown_->width : 0,
-              shown_ ? shown_->height : 0);
+  if (idle_)
+    ImGui::Text("idle: the view is unchanged (last: method %.1f ms at %dx%d)", 1e3 * render_s_,
+                shown_ ? shown_->width : 0, shown_ ? shown_->height : 0);
+  else
+    ImGui::Text("frame %.1f ms (%.1f fps), method %.1f ms at %dx%d", 1e3 * frame_s_,
+                frame_s_ > 0 ? 1.0 / frame_s_ : 0.0, 1e3 * render_s_, shown_ ? shown_->width : 0,
+                shown_ ? shown_->height : 0);
   for (const PassTime& t : numbers_.times) ImGui::Text("  %-10s %8.2f ms", t.pass.c_str(), 1e3 * t.seconds);
   for (const auto& [name, value] : numbers_.stats) ImGui::Text("  %s %.6g", name.c_str(), value);
   error_panel();

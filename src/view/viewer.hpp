@@ -86,6 +86,7 @@ private:
   void draw_image(int width, int height);
   void error_panel();
   void write_window(int width, int height);
+  void render_if_changed(int width, int height, bool moving);
   void render(int width, int height, Targets& target);
   void draw_panels();
   void camera_panel();
@@ -108,6 +109,7 @@ private:
   Settings settings_;
   std::vector<SettingWidget> widgets_;
   std::unique_ptr<Method> method_;
+  int method_generation_ = 0;  // counts re-creations: new method or settings
   Pass pass_ = Pass::composite;
   ToneMap tone_;
 
@@ -116,6 +118,10 @@ private:
   float moving_scale_ = 0.5f;
   std::chrono::steady_clock::time_point last_move_{};
   Camera last_camera_;
+  // What the shown frame was rendered from; idle_: this frame rendered nothing.
+  std::uint64_t rendered_key_ = 0;
+  int rendered_generation_ = -1;
+  bool idle_ = false;
 
   ErrorView error_view_ = ErrorView::off;
   std::unique_ptr<ReferenceJob> reference_;
