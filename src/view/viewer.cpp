@@ -121,13 +121,23 @@ std::vector<std::string> viewer_methods() {
   return names;
 }
 
+namespace {
+
+// Throws InputError(source, name) for an unknown method or the CPU reference.
+const MethodInfo& viewer_method(const std::string& name, const std::string& source) {
+  const MethodInfo& info = find_method(name);
+  const auto methods = viewer_methods();
+  if (std::find(methods.begin(), methods.end(), info.name) == methods.end())
+    throw InputError(source, info.name, "the viewer shows GPU methods; the CPU reference renders only for the error view");
+  return info;
+}
+
+}  // namespace
+
 Viewer::Viewer(ViewOptions options)
     : options_(std::move(options)), scene_(options_.scene), full_(std::make_unique<Targets>()),
       reduced_(std::make_unique<Targets>()) {
-  const MethodInfo& info = find_method(options_.method);
-  const auto methods = viewer_methods();
-  if (std::find(methods.begin(), methods.end(), info.name) == methods.end())
-    throw InputError("--method", info.name, "the viewer shows GPU methods; the CPU reference renders only for the error view");
+  const MethodInfo& info = viewer_method(options_.method, "--method");
   const Settings settings = app::method_settings(info, options_.assignments);
   window_ = open_window(options_.width, options_.height);
   use_current_gl_context();
@@ -173,7 +183,7 @@ void Viewer::create_method(const std::string& name, const Settings& settings) {
 }
 
 void Viewer::switch_method(const std::string& name) {
-  const MethodInfo& info = find_method(name);
+  const MethodInfo& info = viewer_method(name, "method");
   create_method(info.name, Settings(info.settings));
 }
 
