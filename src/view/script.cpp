@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 namespace airlight::view {
 namespace {
@@ -119,12 +120,21 @@ double frames_ms(Viewer& v, int n, bool orbiting) {
   return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / n;
 }
 
-// Frame times as a person sees them: whole frames (method, display, panels, swap).
+std::string size_text(const Viewer& v) {
+  const auto [width, height] = v.shown_size();
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+// Frame times as a person sees them: whole frames (method, display, panels,
+// swap), with the size the method rendered at.
 void measure(Viewer& v, int n) {
   frames_ms(v, 1, false);  // the first frame after a switch compiles programs
-  const double rest = frames_ms(v, n, false), moving = frames_ms(v, n, true);
-  std::printf("%s: at rest %.1f ms/frame (%.1f fps), moving %.1f ms/frame (%.1f fps)\n", v.method().c_str(), rest,
-              1e3 / rest, moving, 1e3 / moving);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // a camera moved before has settled
+  const double rest = frames_ms(v, n, false);
+  const std::string rest_size = size_text(v);
+  const double moving = frames_ms(v, n, true);
+  std::printf("%s: at rest %.1f ms/frame (%.1f fps) at %s, moving %.1f ms/frame (%.1f fps) at %s\n",
+              v.method().c_str(), rest, 1e3 / rest, rest_size.c_str(), moving, 1e3 / moving, size_text(v).c_str());
   std::fflush(stdout);
 }
 

@@ -185,6 +185,16 @@ TEST(ViewSession, ErrorAgainstTheBackgroundReference) {
   EXPECT_GT(few, defaults);
 }
 
+// Progressive rendering: full size at rest, half size (the default moving
+// scale) while the camera orbits.
+TEST(ViewSession, ReducedSizeWhileTheCameraMoves) {
+  REQUIRE_XVFB();
+  const Outcome o = run_view("measure 3\nquit\n", "");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("at 256x192, moving"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("at 128x96\n"), std::string::npos) << o.out;
+}
+
 TEST(ViewSession, ScriptErrorsNameTheLine) {
   REQUIRE_XVFB();
   const Outcome o = run_view("frame\ncamera spin 3\n", "");

@@ -166,6 +166,10 @@ Viewer::~Viewer() {
   glfwTerminate();
 }
 
+std::pair<int, int> Viewer::shown_size() const {
+  return shown_ ? std::pair{shown_->width, shown_->height} : std::pair{0, 0};
+}
+
 bool Viewer::open() const { return !glfwWindowShouldClose(window_); }
 
 void Viewer::quit() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 struct GLFWwindow;
@@ -56,6 +57,8 @@ public:
   // What the panels and the script change.
   FrameInputs& inputs() { return inputs_; }
   const std::string& method() const { return method_name_; }
+  // The size the shown frame was rendered at (reduced while the camera moves).
+  std::pair<int, int> shown_size() const;
   void switch_method(const std::string& name);
   void set_setting(const std::string& label, const std::string& value);
   void set_pass(Pass pass) { pass_ = pass; }
