@@ -5,6 +5,7 @@
 #include <airlight/error.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -37,6 +38,14 @@ public:
     }
     if (used != w.size() || w.empty()) throw std::invalid_argument(std::string(what) + " must be a number, got '" + w + "'");
     return value;
+  }
+  // A whole number in [lo, hi] (checked before the cast, which would be undefined outside int).
+  int count(const char* what, int lo, int hi) {
+    const float x = number(what);
+    if (!(x >= lo && x <= hi) || x != std::floor(x))
+      throw std::invalid_argument(std::string(what) + " must be a whole number in [" + std::to_string(lo) + ", " +
+                                  std::to_string(hi) + "]");
+    return static_cast<int>(x);
   }
   glm::vec3 vec3(const char* what) {
     const float x = number(what), y = number(what), z = number(what);
@@ -75,11 +84,8 @@ void camera_command(Viewer& v, Words& w) {
 
 void light_command(Viewer& v, Words& w) {
   auto& lights = v.inputs().lights;
-  const float index = w.number("light index");
-  if (index < 0 || index >= lights.size() || index != static_cast<int>(index))
-    throw std::invalid_argument("no light " + std::to_string(index) + " (the scene has " +
-                                std::to_string(lights.size()) + ")");
-  Light& light = lights[static_cast<size_t>(index)];
+  if (lights.empty()) throw std::invalid_argument("the scene has no lights");
+  Light& light = lights[w.count("light index", 0, static_cast<int>(lights.size()) - 1)];
   const std::string what = w.word("light property");
   if (what == "position") light.position = w.vec3("position");
   else if (what == "direction") light.direction = glm::normalize(w.vec3("direction"));
@@ -169,9 +175,9 @@ bool run_line(Viewer& v, Words& w) {
   else if (command == "light") light_command(v, w);
   else if (command == "medium") medium_command(v, w);
   else if (command == "frame") {
-    const int n = w.done() ? 1 : static_cast<int>(w.number("frame count"));
+    const int n = w.done() ? 1 : w.count("frame count", 1, 100000);
     for (int i = 0; i < n; ++i) v.frame();
-  } else if (command == "measure") measure(v, static_cast<int>(w.number("frame count")));
+  } else if (command == "measure") measure(v, w.count("frame count", 1, 100000));
   else if (command == "error") v.set_error_view(error_view_named(w.word("error view")));
   else if (command == "reference") {
     const double e = v.wait_for_reference();

@@ -201,6 +201,8 @@ TEST(ViewSession, ScriptErrorsNameTheLine) {
   expect_bad_input(o, (work_dir() / "session.txt").string(), "line 2", "a bad script line");
   const Outcome s = run_view("set no_such_setting 3\n", "");
   expect_bad_input(s, "set", "no_such_setting", "an unknown widget label");
+  const Outcome l = run_view("light 1 cone 20\n", "");  // teapot_spot has one light
+  expect_bad_input(l, (work_dir() / "session.txt").string(), "line 1", "a light the scene does not have");
   const Outcome r = run_view("method reference\n", "");
   expect_bad_input(r, "method", "reference", "the CPU reference is not a live method");
 }
