@@ -78,6 +78,9 @@ struct EngineTarget {
   unsigned transmittance = 0;  // RGBA32F or RGBA16F: T(d) per channel, what compositing needs
   unsigned colour = 0;         // any colour-renderable texture holding linear L_surf in W/(m²·sr)
                                // (before exposure and tone mapping): becomes L_surf·T + L_air
+  unsigned surface = 0;        // RGBA32F or RGBA16F: airlight's own L_surf·T(d) (its G-buffer and
+                               // shading, as read_back's `surface`), for a caller with no shading of
+                               // its own (the viewer); needs FrameInputs::surface and no engine depth
 };
 
 struct EngineFrame {

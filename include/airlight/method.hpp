@@ -37,7 +37,8 @@ struct FrameInputs {
   // empty means every mesh stays where the scene put it.
   std::vector<glm::mat4> transforms;
   // Whether the surface term L_surf·T(d) is wanted as well (read_back's
-  // `surface`); false skips its pass. An engine's frame never computes it.
+  // `surface`); false skips its pass. An engine's frame computes it only for
+  // an EngineTarget::surface.
   bool surface = true;
 };
 
@@ -65,6 +66,13 @@ struct FrameImages {
   std::vector<std::pair<std::string, double>> stats;  // method-specific counters
 };
 
+// The last frame's pass times and counters without its images: what an
+// interactive caller shows every frame without paying for read_back.
+struct FrameNumbers {
+  std::vector<PassTime> times;
+  std::vector<std::pair<std::string, double>> stats;
+};
+
 class Method {
 public:
   virtual ~Method() = default;
@@ -77,6 +85,9 @@ public:
   virtual void render_frame(const FrameInputs& inputs, const EngineFrame& engine);
   // The last frame: its images (read from the GPU), pass times and counters.
   virtual FrameImages read_back() = 0;
+  // The last frame's times and counters alone; empty for a method that has
+  // none without read_back (the CPU reference).
+  virtual FrameNumbers numbers() const { return {}; }
 };
 
 // Batch use (render, compare, bench): the scene as loaded at width × height,

@@ -117,6 +117,13 @@ Scene load_scene(const std::filesystem::path& file);
 // Parses scene JSON text; `file` names it in messages and anchors relative paths.
 Scene parse_scene(const std::string& json_text, const std::filesystem::path& file);
 
+// Writes `scene` as an airlight-scene/1 JSON file that load_scene reads back to
+// the same Scene: each mesh as FILE_STEM.meshN.obj (world space, its normals)
+// and each gobo as FILE_STEM.goboN.exr beside it. Bounding volumes that are not
+// axis-aligned are left out (load computes them). Throws InputError for a name
+// not ending in .json, Failure when a file cannot be written.
+void save_scene(const Scene& scene, const std::filesystem::path& file);
+
 // Built-in scenes (docs/design.md §4). Throws InputError("--builtin", name) for an
 // unknown name, listing the known ones.
 Scene builtin_scene(const std::string& name);

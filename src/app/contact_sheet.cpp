@@ -17,21 +17,6 @@
 
 namespace airlight::app {
 
-namespace {
-
-constexpr int margin = 8, line_h = 14, label_lines = 4, min_cell_w = 190, bar_h = 12;
-constexpr double font_size = 11.0;
-
-using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
-using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
-
-std::uint32_t rgb24(double r, double g, double b) {
-  auto byte = [](double v) { return static_cast<std::uint32_t>(std::lround(255.0 * std::clamp(v, 0.0, 1.0))); };
-  return byte(r) << 16 | byte(g) << 8 | byte(b);
-}
-
-// Inferno (matplotlib), sampled at nine points: perceptually uniform and still
-// ordered when printed in grey.
 glm::dvec3 inferno(double t) {
   static constexpr std::array<std::array<double, 3>, 9> stops{{{0, 0, 4},
                                                                 {31, 12, 72},
@@ -48,6 +33,19 @@ glm::dvec3 inferno(double t) {
   glm::dvec3 c;
   for (int k = 0; k < 3; ++k) c[k] = ((1.0 - f) * stops[i][k] + f * stops[i + 1][k]) / 255.0;
   return c;
+}
+
+namespace {
+
+constexpr int margin = 8, line_h = 14, label_lines = 4, min_cell_w = 190, bar_h = 12;
+constexpr double font_size = 11.0;
+
+using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
+
+std::uint32_t rgb24(double r, double g, double b) {
+  auto byte = [](double v) { return static_cast<std::uint32_t>(std::lround(255.0 * std::clamp(v, 0.0, 1.0))); };
+  return byte(r) << 16 | byte(g) << 8 | byte(b);
 }
 
 // A w·scale × h·scale surface, each pixel repeated scale² times (nearest

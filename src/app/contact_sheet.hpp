@@ -5,6 +5,7 @@
 #include "core/tonemap.hpp"
 
 #include <airlight/image.hpp>
+#include <glm/vec3.hpp>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -33,6 +34,10 @@ HeatScale heat_scale(const std::vector<SheetEntry>& entries);
 
 // The scale in words, as compare prints it and the sheet shows it under its bar.
 std::string describe(const HeatScale& scale);
+
+// Inferno (matplotlib) at t in [0, 1], sampled at nine points: perceptually
+// uniform and still ordered when printed in grey. The heat maps' colours.
+glm::dvec3 inferno(double t);
 
 // Writes the sheet as PNG; entries[0] is the reference, whose pixels every heat
 // map is measured against. Throws Failure when the file cannot be written.

@@ -194,7 +194,7 @@ void render_tile(const Context& c, const TileGrid& grid, int tile, Images& frame
 
 }  // namespace
 
-Images render(const Scene& scene, int width, int height, const Settings& settings) {
+Images render(const Scene& scene, int width, int height, const Settings& settings, Control* control) {
   if (width <= 0 || height <= 0) throw Failure("reference: the image size must be positive");
   const RayCaster rays(scene);
   const Context context{scene, rays, settings};
@@ -202,15 +202,19 @@ Images render(const Scene& scene, int width, int height, const Settings& setting
   Images frame{Image(width, height), Image(width, height), Image(width, height)};
   std::atomic<long> shadow_rays{0}, nonfinite{0};
   Progress progress("reference", grid.count());
+  if (control) control->total = grid.count();
   tbb::parallel_for(tbb::blocked_range<int>(0, grid.count(), 1), [&](const tbb::blocked_range<int>& tiles) {
     for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
+      if (control && control->cancel) return;
       Counters count;
       render_tile(context, grid, tile, frame, count);
       shadow_rays += count.shadow_rays;
       nonfinite += count.nonfinite;
       progress.advance();
+      if (control) ++control->done;
     }
   });
+  if (control && control->cancel) throw Cancelled();
   frame.shadow_rays = shadow_rays;
   frame.nonfinite = nonfinite;
   return frame;

@@ -3,8 +3,10 @@
 // casts, the airlight integral of docs/design.md §1 by optics::airlight_quadrature, and
 // Lambertian surfaces, per pixel of the camera of docs/design.md §5. Every method is judged
 // against its airlight image.
+#include <airlight/error.hpp>
 #include <airlight/image.hpp>
 #include <airlight/scene.hpp>
+#include <atomic>
 
 namespace airlight::reference {
 
@@ -22,8 +24,19 @@ struct Images {
                          // replaced (NaN → 0, +∞ → FLT_MAX); 0 unless a light sits on a view ray
 };
 
+// Lets another thread follow a render and stop it (the viewer's background
+// reference): `done` of `total` tiles are finished; once `cancel` is set the
+// tiles not yet started are skipped and render throws Cancelled.
+struct Control {
+  std::atomic<bool> cancel{false};
+  std::atomic<long> done{0}, total{0};
+};
+struct Cancelled : Failure {
+  Cancelled() : Failure("reference: cancelled") {}
+};
+
 // Renders all three passes of `scene` at width × height. Shows progress on
 // stderr when it is a terminal. Throws airlight::Failure on Embree errors.
-Images render(const Scene& scene, int width, int height, const Settings& settings = {});
+Images render(const Scene& scene, int width, int height, const Settings& settings = {}, Control* control = nullptr);
 
 }  // namespace airlight::reference

@@ -527,6 +527,18 @@ TEST(Reference, CompositeIsSurfacePlusAirlight) {
       EXPECT_FLOAT_EQ(frame.composite.pixels[k][c], frame.surface.pixels[k][c] + frame.airlight.pixels[k][c]);
 }
 
+// The viewer follows a background reference through Control and stops it.
+TEST(Reference, ControlCountsTilesAndCancels) {
+  Control control;
+  render(shadowed_shaft(), 40, 30, {}, &control);
+  EXPECT_GT(control.total.load(), 1);
+  EXPECT_EQ(control.done.load(), control.total.load());
+  Control cancelled;
+  cancelled.cancel = true;
+  EXPECT_THROW(render(shadowed_shaft(), 40, 30, {}, &cancelled), Cancelled);
+  EXPECT_EQ(cancelled.done.load(), 0);
+}
+
 TEST(Reference, BadMeshesAndSizesAreFailures) {
   Scene scene = fog_scene(Color(0.05f), Color(0.01f));
   scene.meshes = {quad_y(0.0, 1.0, Color(0.5f))};

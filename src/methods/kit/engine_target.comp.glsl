@@ -1,5 +1,5 @@
-// An engine's target (kit::GpuMethod, <airlight/engine.hpp>): L_air copied into
-// its texture, or with TRANSMITTANCE the eye leg's T(d) = exp(−τ(eye → d)) per
+// An engine's target (kit::GpuMethod, <airlight/engine.hpp>): L_air (or L_surf·T)
+// copied into its texture, or with TRANSMITTANCE the eye leg's T(d) = exp(−τ(eye → d)) per
 // channel, which compositing L_surf·T + L_air needs. TARGET_FORMAT is the
 // engine texture's image format (rgba32f or rgba16f).
 #include "methods/kit/scene.glsl"

@@ -308,6 +308,47 @@ TEST(EngineState, BadTargetsAndShadowMapsAreRefusedByName) {
   }
 }
 
+// A caller with no shading of its own (the viewer) takes airlight's L_air and
+// L_surf·T(d) into its textures: the same images read_back gives, bit for bit
+// (both are copies of the same RGBA32F textures), and the same pass list.
+TEST(EngineState, SurfaceTargetAndNumbersMatchReadBack) {
+  gpu::Context& context = gpu::Context::headless();
+  const Scene scene = builtin_scene("teapot_spot");
+  auto method = prepared(scene);
+  const FrameImages own = render(*method, scene, width, height);
+  const gpu::Texture airlight = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width, height);
+  const gpu::Texture surface = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width, height);
+  EngineFrame engine;
+  engine.target.airlight = airlight.id();
+  engine.target.surface = surface.id();
+  method->render_frame(frame_inputs(scene, width, height), engine);
+  const FrameNumbers numbers = method->numbers();
+  EXPECT_EQ(compare_images(read_texture(airlight.id()), own.airlight).max_abs, 0.0);
+  EXPECT_EQ(compare_images(read_texture(surface.id()), own.surface).max_abs, 0.0);
+  EXPECT_GT(compare_images(Image(width, height), own.surface).mean_reference, 0.0);  // the surface was shaded
+  std::vector<std::string> passes;
+  for (const PassTime& t : numbers.times) passes.push_back(t.pass);
+  EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "shadow", "surface", "airlight", "engine"}));
+  context.check("surface target");
+}
+
+TEST(EngineState, SurfaceTargetNeedsAirlightsOwnGbuffer) {
+  gpu::Context::headless();
+  const Scene scene = builtin_scene("teapot_spot");
+  auto method = prepared(scene);
+  const gpu::Texture surface = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width, height);
+  EngineFrame engine;
+  engine.target.surface = surface.id();
+  FrameInputs inputs = frame_inputs(scene, width, height);
+  inputs.surface = false;
+  try {
+    method->render_frame(inputs, engine);
+    ADD_FAILURE() << "a surface target without FrameInputs::surface was accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "EngineTarget: surface: needs FrameInputs::surface and no EngineFrame::depth");
+  }
+}
+
 TEST(EngineState, CpuReferenceCannotRenderIntoAnEnginesFrame) {
   const Scene scene = builtin_scene("teapot_spot");
   const MethodInfo& info = find_method("reference");

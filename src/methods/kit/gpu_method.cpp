@@ -37,12 +37,16 @@ void check_size(GLuint texture, const char* what, int width, int height) {
 // An engine's frame against this frame's inputs, before anything is drawn.
 void check_engine(const EngineFrame& engine, const FrameInputs& inputs) {
   const EngineTarget& t = engine.target;
-  for (const auto& [texture, what] : {std::pair{t.airlight, "airlight"}, std::pair{t.transmittance, "transmittance"}})
+  for (const auto& [texture, what] : {std::pair{t.airlight, "airlight"}, std::pair{t.transmittance, "transmittance"},
+                                     std::pair{t.surface, "surface"}})
     if (texture) {
       check_size(texture, what, inputs.width, inputs.height);
       image_format(texture, what);
     }
   if (t.colour) check_size(t.colour, "colour", inputs.width, inputs.height);
+  // The surface term is shaded from airlight's own G-buffer, which an engine's depth replaces.
+  if (t.surface && (engine.depth || !inputs.surface))
+    throw InputError("EngineTarget", "surface", "needs FrameInputs::surface and no EngineFrame::depth");
   if (engine.shadows.size() > inputs.lights.size())
     throw InputError("EngineFrame", "shadows", "has more entries than the frame has lights");
   for (size_t i = 0; i < engine.shadows.size(); ++i)
@@ -88,7 +92,7 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
   gpu::SavedState state;
   PassTimer timer;
   // Shadow maps for the method, or for the surface term (its lights are shadowed whatever the method).
-  const bool surface = inputs.surface && !engine;
+  const bool surface = inputs.surface && (!engine || engine->target.surface);
   frame_.render(inputs, frame_settings_, engine, {uses_shadow_maps() || surface, surface}, timer);
   if (inputs.width != width_ || inputs.height != height_) {
     airlight_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, inputs.width, inputs.height);
@@ -104,21 +108,23 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
   context_->check("render");
 }
 
-// L_air and T(d) into the engine's textures (engine_target.comp.glsl), then
+// L_air, T(d) and L_surf·T(d) into the engine's textures (engine_target.comp.glsl), then
 // L = L_surf·T + L_air into its colour target by dual-source blending
 // (engine_composite.frag.glsl): the engine's colour is only blended into.
 void GpuMethod::write_engine_target(const EngineTarget& target, PassTimer& timer) {
   gpu::ScopedPass pass(timer, "engine");
   const std::string defines = frame_.defines();
-  for (const auto& [texture, what, transmittance] :
-       {std::tuple{target.airlight, "airlight", false}, std::tuple{target.transmittance, "transmittance", true}}) {
+  for (const auto& [texture, what, transmittance, source] :
+       {std::tuple{target.airlight, "airlight", false, airlight_.id()},
+        std::tuple{target.transmittance, "transmittance", true, airlight_.id()},
+        std::tuple{target.surface, "surface", false, frame_.surface().id()}}) {
     if (!texture) continue;
     const ImageFormat format = image_format(texture, what);
     const Program& program = gpu::cached_compute_program(
         "methods/kit/engine_target.comp.glsl",
         defines + "#define TARGET_FORMAT " + format.glsl + "\n" + (transmittance ? "#define TRANSMITTANCE\n" : ""));
     glUseProgram(program.id());
-    glBindImageTexture(0, airlight_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(0, source, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(1, texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, format.gl);
     gpu::dispatch_pixels(width_, height_);
   }
@@ -137,6 +143,8 @@ void GpuMethod::write_engine_target(const EngineTarget& target, PassTimer& timer
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_BLEND);
 }
+
+FrameNumbers GpuMethod::numbers() const { return {times_, stats()}; }
 
 FrameImages GpuMethod::read_back() {
   if (!rendered_) throw Failure("read_back() before render_frame()");

@@ -33,6 +33,7 @@ public:
   void render_frame(const FrameInputs& inputs) final;
   void render_frame(const FrameInputs& inputs, const EngineFrame& engine) final;
   FrameImages read_back() final;
+  FrameNumbers numbers() const final;
 
 protected:
   // After the frame is prepared, with the context current: what depends only
