@@ -59,11 +59,11 @@ void delete_texture(GLuint id) {
 }
 }  // namespace detail
 
-Sampler make_nearest_sampler() {
+Sampler make_sampler(GLenum filter) {
   GLuint id = 0;
   glCreateSamplers(1, &id);
-  glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
   glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);

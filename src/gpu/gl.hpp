@@ -64,9 +64,11 @@ Texture make_texture(GLenum target, GLenum internal_format, int width, int heigh
 Framebuffer make_framebuffer();
 VertexArray make_vertex_array();
 Query make_query(GLenum target);
-// Nearest, clamped, no depth comparison: bound to a unit, it reads a texture's
-// stored values whatever the texture's own parameters (a caller's shadow map).
-Sampler make_nearest_sampler();
+// Clamped, no depth comparison, filtered by `filter` (GL_NEAREST, GL_LINEAR):
+// bound to a unit, it reads a texture's stored values whatever the texture's own
+// parameters (a caller's shadow map).
+Sampler make_sampler(GLenum filter);
+inline Sampler make_nearest_sampler() { return make_sampler(GL_NEAREST); }
 
 // Bytes of storage held by the live buffers and textures made above (texel size
 // × width × height × layers), for `airlight bench`: what a method allocates is the

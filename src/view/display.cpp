@@ -8,16 +8,6 @@ namespace {
 
 constexpr int display_values = 3;  // display.frag.glsl's `pass` beyond the three of Pass
 
-gpu::Sampler make_sampler(GLenum filter) {
-  GLuint sampler = 0;
-  glCreateSamplers(1, &sampler);
-  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, filter);
-  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, filter);
-  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return gpu::Sampler(sampler);
-}
-
 int texture_width(GLuint texture) {
   GLint width = 0;
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &width);
@@ -27,7 +17,8 @@ int texture_width(GLuint texture) {
 }  // namespace
 
 Display::Display()
-    : empty_(gpu::make_vertex_array()), nearest_(make_sampler(GL_NEAREST)), bilinear_(make_sampler(GL_LINEAR)) {}
+    : empty_(gpu::make_vertex_array()), nearest_(gpu::make_sampler(GL_NEAREST)),
+      bilinear_(gpu::make_sampler(GL_LINEAR)) {}
 
 void Display::draw(GLuint airlight, GLuint surface, int x, int y, int width, int height, Pass pass,
                    const ToneMap& tone) const {
