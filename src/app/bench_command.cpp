@@ -7,7 +7,7 @@
 #include "app/method_settings.hpp"
 #include "app/output_check.hpp"
 #include "app/plot.hpp"
-#include "app/reference_cache.hpp"
+#include "reference/cache.hpp"
 #include "app/scene_source.hpp"
 #include "core/atomic_file.hpp"
 #include "core/metrics.hpp"
@@ -250,11 +250,11 @@ Measurement measure(const Variant& variant, const Scene& scene, Size size, const
 
 std::vector<Measurement> run_bench(const BenchOptions& o, const std::vector<Scene>& scenes,
                                    const std::vector<Size>& sizes, const std::vector<Variant>& variants) {
-  const std::filesystem::path cache = o.cache.empty() ? default_cache_dir() : std::filesystem::path(o.cache);
+  const std::filesystem::path cache = o.cache.empty() ? reference::default_cache_dir() : std::filesystem::path(o.cache);
   std::vector<Measurement> rows;
   for (const auto& scene : scenes)
     for (const auto& size : sizes) {
-      const Image reference = cached_reference(scene, size.width, size.height, cache).airlight;
+      const Image expected = reference::cached_reference(scene, size.width, size.height, cache).airlight;
       double floor_ns = 0.0;
       if (o.floor) {
         const FloorTimes f = time_floor(size.width, size.height, o.warmup, o.frames);
@@ -264,7 +264,7 @@ std::vector<Measurement> run_bench(const BenchOptions& o, const std::vector<Scen
         floor_ns = f.ns_per_sample;
       }
       for (const auto& variant : variants) {
-        rows.push_back(measure(variant, scene, size, reference, o));
+        rows.push_back(measure(variant, scene, size, expected, o));
         rows.back().floor_ns = floor_ns;
       }
     }
@@ -424,7 +424,7 @@ std::filesystem::path equal_quality_file(const std::filesystem::path& csv) {
 void check_outputs(const BenchOptions& o, const std::vector<Size>& sizes, const std::vector<Variant>& variants) {
   check_output_file("--csv", o.csv, {".csv"});
   if (!o.plot.empty()) check_output_file("--plot", o.plot, {".png"});
-  check_output_dir("--cache", o.cache.empty() ? default_cache_dir() : std::filesystem::path(o.cache));
+  check_output_dir("--cache", o.cache.empty() ? reference::default_cache_dir() : std::filesystem::path(o.cache));
   std::vector<const MethodInfo*> methods{&find_method("reference")};
   for (const auto& v : variants) methods.push_back(v.method);
   // The reference's two images stay cached beside each run.

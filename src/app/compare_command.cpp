@@ -5,7 +5,7 @@
 #include "app/measure.hpp"
 #include "app/method_settings.hpp"
 #include "app/output_check.hpp"
-#include "app/reference_cache.hpp"
+#include "reference/cache.hpp"
 #include "app/scene_source.hpp"
 #include "app/tone_options.hpp"
 #include "core/atomic_file.hpp"
@@ -111,8 +111,8 @@ std::string changed_settings(const MethodInfo& info, const Settings& settings) {
 }
 
 Result reference_result(const Scene& scene, Size size, Pass pass, const fs::path& cache_dir) {
-  const std::string key = reference_key(scene, size.width, size.height);
-  CachedReference frame = cached_reference(scene, size.width, size.height, cache_dir);
+  const std::string key = reference::reference_key(scene, size.width, size.height);
+  reference::CachedReference frame = reference::cached_reference(scene, size.width, size.height, cache_dir);
   std::fprintf(stderr, "compare: reference %s %s (key %s)\n",
                frame.cached ? "read from the cache" : "rendered into the cache", cache_dir.c_str(), key.c_str());
   Result r;
@@ -193,7 +193,7 @@ void check_outputs(const CompareOptions& o, Size size, const std::vector<Entry>&
   check_output_file("--out", o.out, {".png"});
   if (!o.csv.empty()) check_output_file("--csv", o.csv, {".csv"});
   if (!o.images.empty()) check_output_dir("--images", o.images);
-  check_output_dir("--cache", o.cache.empty() ? default_cache_dir() : fs::path(o.cache));
+  check_output_dir("--cache", o.cache.empty() ? reference::default_cache_dir() : fs::path(o.cache));
   std::vector<const MethodInfo*> methods{&find_method("reference")};
   for (const auto& e : entries) methods.push_back(e.info);
   // Every result's image is kept for the sheet, and the reference's surface with it.
@@ -208,7 +208,7 @@ void compare(const CompareOptions& o) {
   const Pass pass = o.pass == "composite" ? Pass::composite : Pass::airlight;
   const Scene scene = o.scene.load();
   std::vector<Result> results{
-      reference_result(scene, size, pass, o.cache.empty() ? default_cache_dir() : fs::path(o.cache))};
+      reference_result(scene, size, pass, o.cache.empty() ? reference::default_cache_dir() : fs::path(o.cache))};
   {
     Progress progress("compare", static_cast<long>(entries.size()));
     for (const auto& entry : entries) {

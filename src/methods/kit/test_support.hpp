@@ -2,6 +2,7 @@
 // Test helpers shared by raymarch_test and interleaved_test: rendering a method
 // with settings, the cached reference, and a scene built in code that uses
 // every feature of the model.
+#include "reference/cache.hpp"
 #include "reference/reference.hpp"
 
 #include <airlight/method.hpp>
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <glm/geometric.hpp>
 #include <map>
 #include <memory>
@@ -33,12 +35,25 @@ inline FrameImages render(const MethodInfo& info, const Scene& scene, const std:
   return airlight::render(*prepared(info, scene, assignments), scene, width, height);
 }
 
-// The reference's airlight, rendered once per scene name and size in a process.
+// The reference's passes from the on-disk cache that every test of one ctest
+// run shares: AIRLIGHT_TEST_CACHE, which the reference_cache fixture empties
+// before the run (README "Tests and their budget"), so that a scene's
+// reference is rendered once per run, not once per test process. Rendered here
+// when the variable is unset (a test program run by hand).
+inline reference::CachedReference shared_reference(const Scene& scene, int width, int height,
+                                                   const reference::Settings& settings = {}) {
+  if (const char* dir = std::getenv("AIRLIGHT_TEST_CACHE"); dir && *dir)
+    return reference::cached_reference(scene, width, height, dir, settings);
+  reference::Images frame = reference::render(scene, width, height, settings);
+  return {std::move(frame.airlight), std::move(frame.surface)};
+}
+
+// The reference's airlight, read once per scene name and size in a process.
 inline const Image& reference_airlight(const Scene& scene, int width, int height) {
   static std::map<std::tuple<std::string, int, int>, Image> cache;
   const auto key = std::make_tuple(scene.name, width, height);
   auto it = cache.find(key);
-  if (it == cache.end()) it = cache.emplace(key, reference::render(scene, width, height).airlight).first;
+  if (it == cache.end()) it = cache.emplace(key, shared_reference(scene, width, height).airlight).first;
   return it->second;
 }
 
@@ -47,7 +62,7 @@ inline const Image& reference_airlight(const Scene& scene, int width, int height
 // much: 0.3663 against 0.3563 from 256 segments, raymarch at N = 4096 and the
 // exact methods), which the exact methods' tests would count as their error.
 inline Image fine_reference_airlight(const Scene& scene, int width, int height) {
-  return render(find_method("reference"), scene, {"min_segments=256"}, width, height).airlight;
+  return shared_reference(scene, width, height, {.min_segments = 256}).airlight;
 }
 
 // A method's counter by name (FrameImages::stats), −1 when it reports none.

@@ -1,13 +1,13 @@
 // The on-disk reference cache (issue 6): a hit returns the stored frame, and
 // any change to the scene's content changes the key.
-#include "app/reference_cache.hpp"
+#include "reference/cache.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <memory>
 
-namespace airlight::app {
+namespace airlight::reference {
 namespace {
 
 namespace fs = std::filesystem;
@@ -56,7 +56,7 @@ TEST(ReferenceCache, SecondCallReadsTheCache) {
   fs::remove_all(dir);
 }
 
-TEST(ReferenceCache, KeyChangesWithTheScenesContentAndSize) {
+TEST(ReferenceCache, KeyChangesWithTheScenesContentSizeAndSettings) {
   const Scene scene = spot_over_floor();
   const std::string key = reference_key(scene, 16, 12);
   EXPECT_EQ(key.size(), 16u);
@@ -77,10 +77,18 @@ TEST(ReferenceCache, KeyChangesWithTheScenesContentAndSize) {
   vertex.meshes[0].positions[2].z = 4.5f;
   EXPECT_NE(reference_key(vertex, 16, 12), key);
 
+  Scene no_shadow = spot_over_floor();
+  no_shadow.meshes[0].casts_shadows = false;  // the same triangles, another image
+  EXPECT_NE(reference_key(no_shadow, 16, 12), key);
+
+  EXPECT_EQ(reference_key(scene, 16, 12, Settings{}), key);
+  EXPECT_NE(reference_key(scene, 16, 12, {.min_segments = 256}), key);
+  EXPECT_NE(reference_key(scene, 16, 12, {.rel_tol = 1e-4}), key);
+
   Scene lobe = spot_over_floor();
   lobe.medium.phase.lobes[0].g = 0.3f;
   EXPECT_NE(reference_key(lobe, 16, 12), key);
 }
 
 }  // namespace
-}  // namespace airlight::app
+}  // namespace airlight::reference

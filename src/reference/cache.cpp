@@ -1,8 +1,7 @@
-#include "app/reference_cache.hpp"
+#include "reference/cache.hpp"
 
 #include "core/atomic_file.hpp"
 #include "core/image_io.hpp"
-#include "reference/reference.hpp"
 
 #include <airlight/error.hpp>
 
@@ -16,7 +15,7 @@
 #include <optional>
 #include <string_view>
 
-namespace airlight::app {
+namespace airlight::reference {
 
 namespace fs = std::filesystem;
 
@@ -103,6 +102,7 @@ void add(Hasher& h, const Mesh& mesh) {
   h.add(mesh.triangles.size());
   for (const auto& t : mesh.triangles) h.bytes(&t[0], 3 * sizeof(unsigned));
   h.add(mesh.albedo);
+  h.add(mesh.casts_shadows);
 }
 
 template <typename T>
@@ -142,18 +142,18 @@ std::optional<CachedReference> load(const Entry& e, int width, int height) {
   return std::nullopt;
 }
 
-CachedReference render_reference(const Scene& scene, int width, int height) {
+CachedReference render_reference(const Scene& scene, int width, int height, const Settings& settings) {
   const auto start = std::chrono::steady_clock::now();
-  reference::Images frame = reference::render(scene, width, height);
+  Images frame = render(scene, width, height, settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return {std::move(frame.airlight), std::move(frame.surface), seconds, false};
 }
 
 }  // namespace
 
-std::string reference_key(const Scene& scene, int width, int height) {
+std::string reference_key(const Scene& scene, int width, int height, const Settings& settings) {
   Hasher h;
-  h.add(std::string_view("airlight-reference/1"));  // bump when the reference's output changes
+  h.add(std::string_view("airlight-reference/2"));  // bump when the reference's output or the key changes
   add(h, scene.camera);
   for (const auto& c : {scene.medium.sigma_s, scene.medium.sigma_a}) h.add(c);
   add(h, scene.medium.phase);
@@ -166,7 +166,6 @@ std::string reference_key(const Scene& scene, int width, int height) {
   h.add(scene.ambient);
   h.add(width);
   h.add(height);
-  const reference::Settings settings;
   h.add(settings.rel_tol);
   h.add(settings.min_segments);
   char hex[17];
@@ -174,15 +173,16 @@ std::string reference_key(const Scene& scene, int width, int height) {
   return hex;
 }
 
-CachedReference cached_reference(const Scene& scene, int width, int height, const fs::path& cache_dir) {
-  const Entry e = entry(cache_dir, reference_key(scene, width, height));
+CachedReference cached_reference(const Scene& scene, int width, int height, const fs::path& cache_dir,
+                                 const Settings& settings) {
+  const Entry e = entry(cache_dir, reference_key(scene, width, height, settings));
   if (auto frame = load(e, width, height)) return *frame;
   std::error_code ec;
   fs::create_directories(cache_dir, ec);
   if (ec) throw Failure("cannot create the reference cache " + cache_dir.string() + ": " + ec.message());
-  CachedReference frame = render_reference(scene, width, height);
+  CachedReference frame = render_reference(scene, width, height, settings);
   store(frame, e);
   return frame;
 }
 
-}  // namespace airlight::app
+}  // namespace airlight::reference
