@@ -248,11 +248,13 @@ std::vector<Singular> singular_cases(const std::string& medium, Phase medium_pha
 // comparison: its ray passes within ~1 µm of the light, where Γ (r0 ≥ 1 µm) and
 // the reference (r ≥ 1 µm) regularize 1/r² differently (docs/decisions.md
 // "Lights on the ray"; π/r0 against 4/r_min): both are finite, neither is physical.
-TEST(Analytic, SingularConfigurations) {
-  std::vector<Singular> cases = singular_cases("isotropic", phase({{PhaseType::isotropic, 0.0f, 1.0f}}));
-  for (Singular& c : singular_cases("hg", phase({{PhaseType::henyey_greenstein, 0.4f, 1.0f}})))
-    cases.push_back(std::move(c));
-  for (const Singular& c : cases) {
+// One test per medium, so that the two run side by side.
+class AnalyticSingular : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(AnalyticSingular, SingularConfigurations) {
+  const bool hg = GetParam() == "hg";
+  const PhaseLobe lobe{hg ? PhaseType::henyey_greenstein : PhaseType::isotropic, hg ? 0.4f : 0.0f, 1.0f};
+  for (const Singular& c : singular_cases(GetParam(), phase({lobe}))) {
     const Image& expected = kit::test::reference_airlight(c.scene, width, height);
     for (const char* f : {"table", "shader"}) {
       const Image image = analytic(c.scene, f).airlight;
@@ -265,6 +267,9 @@ TEST(Analytic, SingularConfigurations) {
     }
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Media, AnalyticSingular, ::testing::Values("isotropic", "hg"),
+                         [](const auto& info) { return info.param; });
 
 // A frame that wants L_air alone has no surface pass either: G-buffer and Γ.
 TEST(Analytic, AirlightAloneRunsNoShadowOrSurfacePass) {
