@@ -4,6 +4,7 @@
 // loading or rendering fails here rather than in a user's hands.
 #include "core/metrics.hpp"
 #include "core/solid.hpp"
+#include "core/test_paths.hpp"
 #include "methods/kit/test_support.hpp"
 
 #include <airlight/method.hpp>
@@ -17,7 +18,7 @@
 namespace airlight {
 namespace {
 
-const std::filesystem::path examples = AIRLIGHT_EXAMPLE_SCENES;
+const std::filesystem::path examples = test::source_dir() / "examples" / "scenes";
 
 // Small enough that the reference of all three takes seconds, large enough that the
 // columns' and the window's shadows span several pixels.
@@ -79,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(
 // scene-format.md "glTF scenes"): its fog from the scene's extras, a spot between columns and
 // a sun. It renders with visible shafts, and raymarch stays near the reference.
 TEST(GltfFixture, BlenderExportRendersNearTheReference) {
-  const std::filesystem::path file = std::filesystem::path(AIRLIGHT_TEST_DATA) / "gltf" / "blender_shafts.glb";
+  const std::filesystem::path file = test::test_data() / "gltf" / "blender_shafts.glb";
   testing::internal::CaptureStderr();
   const Scene scene = load_scene(file);
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");

@@ -1,8 +1,10 @@
 #pragma once
-// End-to-end tests of the `airlight` executable (AIRLIGHT_EXE): a work
+// End-to-end tests of the `airlight` executable (test::airlight_exe()): a work
 // directory per test process (removed when it ends), a run's exit status,
 // stdout and stderr, CSV output, and the bad-input check of docs/design.md §5 — exit 2
 // with a message "airlight: error: <file or option>: <key>: ...".
+#include "core/test_paths.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -51,7 +53,7 @@ struct Outcome {
 // Runs `airlight ARGS` with `env` ("NAME=value ..." or empty) in its environment.
 inline Outcome run_airlight(const std::string& args, const std::string& env = "") {
   const fs::path out = work_dir() / "stdout.txt", err = work_dir() / "stderr.txt";
-  const std::string command = (env.empty() ? "" : "env " + env + " ") + std::string(AIRLIGHT_EXE) + " " + args +
+  const std::string command = (env.empty() ? "" : "env " + env + " ") + airlight_exe().string() + " " + args +
                               " >" + out.string() + " 2>" + err.string();
   const int raw = std::system(command.c_str());
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};

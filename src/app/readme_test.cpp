@@ -11,7 +11,7 @@ namespace {
 
 using namespace test;
 
-const std::string readme = read_text(fs::path(AIRLIGHT_SOURCE_DIR) / "README.md");
+const std::string readme = read_text(source_dir() / "README.md");
 
 // The commands of README's indented code blocks, continuation lines joined,
 // split into words as the shell would (single quotes group).
@@ -46,11 +46,11 @@ std::vector<std::vector<std::string>> readme_commands() {
   return commands;
 }
 
-// Runs AIRLIGHT_EXE with `args` in `dir`.
+// Runs `airlight` with `args` in `dir`.
 Outcome run_in(const fs::path& dir, const std::string& args, const std::string& env = "") {
   const fs::path out = work_dir() / "readme_stdout.txt", err = work_dir() / "readme_stderr.txt";
   const std::string command = "cd " + dir.string() + " && " + (env.empty() ? "" : "env " + env + " ") +
-                              AIRLIGHT_EXE + " " + args + " >" + out.string() + " 2>" + err.string();
+                              airlight_exe().string() + " " + args + " >" + out.string() + " 2>" + err.string();
   const int raw = std::system(command.c_str());
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};
 }
@@ -87,7 +87,7 @@ TEST(Readme, CommandsUseOnlyOptionsTheirSubcommandHas) {
 TEST(Readme, QuickCommandsRunAsPrinted) {
   const fs::path dir = work_dir() / "readme_run";
   fs::create_directories(dir / "out");
-  fs::create_directory_symlink(fs::path(AIRLIGHT_SOURCE_DIR) / "examples", dir / "examples");
+  fs::create_directory_symlink(source_dir() / "examples", dir / "examples");
   int ran = 0;
   for (const auto& words : readme_commands()) {
     if (words[1] != "list" && words[1] != "render" && words[1] != "compare") continue;

@@ -2,6 +2,7 @@
 // reference --pass airlight` writes finite values that match the Sun et al.
 // closed form wherever no occluder is involved.
 #include "core/image_io.hpp"
+#include "core/test_paths.hpp"
 #include "geometry/camera.hpp"
 #include "optics/closed_form.hpp"
 #include "optics/light.hpp"
@@ -88,7 +89,7 @@ bool clear_of_occluders(const Light& light, const Sphere& s, const optics::Ray& 
 TEST(RenderClosedForm, TeapotSpotMatchesSunWhereNoOccluderIsInvolved) {
   const std::filesystem::path out =
       std::filesystem::temp_directory_path() / ("airlight_closed_form_" + std::to_string(::getpid()) + ".pfm");
-  const std::string command = std::string(AIRLIGHT_EXE) +
+  const std::string command = test::airlight_exe().string() +
                               " render --builtin teapot_spot --method reference --pass airlight --size 128x96 --out " +
                               out.string();
   ASSERT_EQ(std::system(command.c_str()), 0);

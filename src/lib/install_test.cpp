@@ -6,6 +6,7 @@
 // conventions, not that it was handed airlight's own textures back.
 #include "core/image_io.hpp"
 #include "core/metrics.hpp"
+#include "core/test_paths.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -44,8 +45,8 @@ TEST(Install, EngineExampleAgainstTheInstalledPackageMatchesRender) {
   const std::string cmake = quoted(AIRLIGHT_CMAKE), size = "128x96";
   const fs::path prefix = work / "prefix", build = work / "example";
 
-  ASSERT_TRUE(step("install", cmake + " --install " + quoted(AIRLIGHT_BUILD_DIR) + " --prefix " + quoted(prefix)));
-  ASSERT_TRUE(step("configure", cmake + " -S " + quoted(AIRLIGHT_EXAMPLE_DIR) + " -B " + quoted(build) +
+  ASSERT_TRUE(step("install", cmake + " --install " + quoted(test::executable_dir() / AIRLIGHT_BUILD_FROM_TEST) + " --prefix " + quoted(prefix)));
+  ASSERT_TRUE(step("configure", cmake + " -S " + quoted(test::source_dir() / "examples" / "engine") + " -B " + quoted(build) +
                                     " -G " + quoted(AIRLIGHT_GENERATOR) + " -DCMAKE_BUILD_TYPE=Release" +
                                     " -DCMAKE_CXX_COMPILER=" + quoted(AIRLIGHT_CXX) +
                                     " -DCMAKE_PREFIX_PATH=" + quoted(prefix)));
@@ -53,7 +54,7 @@ TEST(Install, EngineExampleAgainstTheInstalledPackageMatchesRender) {
   ASSERT_TRUE(step("example", quoted(build / "engine_example") + " --builtin teapot_spot --size " + size +
                                   " --set steps=256 --set sampling=equiangular --out-airlight " +
                                   quoted(work / "engine.pfm") + " --out-composite " + quoted(work / "composite.pfm")));
-  ASSERT_TRUE(step("render", quoted(AIRLIGHT_EXE) + " render --builtin teapot_spot --method raymarch --set steps=256"
+  ASSERT_TRUE(step("render", quoted(test::airlight_exe()) + " render --builtin teapot_spot --method raymarch --set steps=256"
                              " --set sampling=equiangular --pass airlight --size " + size + " --out " +
                              quoted(work / "render.pfm")));
 

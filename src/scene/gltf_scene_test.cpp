@@ -383,7 +383,7 @@ TEST(GltfScene, ASceneFileBesideTheGltfAddsFogLightsAndObjects) {
 
 // The fixture of tests/data/gltf/make_blender_scene.py, as its script sets it up in Blender.
 TEST(GltfScene, BlendersExportLoadsWithTheValuesSetInBlender) {
-  const Scene s = load_scene(fs::path(AIRLIGHT_TEST_DATA) / "gltf" / "blender_shafts.glb");
+  const Scene s = load_scene(test::test_data() / "gltf" / "blender_shafts.glb");
   ASSERT_EQ(s.meshes.size(), 4u);
   for (const Mesh& m : s.meshes) EXPECT_TRUE(well_formed(m));
   EXPECT_EQ(s.meshes[1].name, "nodes[1] (ColumnLeft)");

@@ -1,5 +1,6 @@
 #pragma once
 // Shared checks for the scene layer's tests.
+#include "core/test_paths.hpp"
 #include "scene/mesh_build.hpp"
 
 #include <airlight/error.hpp>
@@ -17,7 +18,7 @@
 namespace airlight::scene_test {
 
 inline std::filesystem::path data_dir() {
-  return std::filesystem::path(AIRLIGHT_TEST_DATA) / "scenes";
+  return test::test_data() / "scenes";
 }
 
 // Runs f and checks that it throws InputError naming `file` and `key`, its message

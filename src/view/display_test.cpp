@@ -6,7 +6,13 @@
 #include "gpu/context.hpp"
 
 #include <gtest/gtest.h>
+#include <ostream>
 #include <vector>
+
+namespace airlight {
+// ctest names the case by its curve, not by the enum's bytes.
+void PrintTo(ToneCurve curve, std::ostream* out) { *out << tone_curve_name(curve); }
+}  // namespace airlight
 
 namespace airlight::view {
 namespace {

@@ -2,6 +2,7 @@
 // (docs/design.md §6): the same image from fewer fragments where the casters'
 // inner volumes prove part of the lit region unlit.
 #include "core/metrics.hpp"
+#include "core/test_paths.hpp"
 #include "methods/kit/test_support.hpp"
 
 #include <airlight/method.hpp>
@@ -23,7 +24,7 @@ using namespace kit::test;
 constexpr int width = 128, height = 96;
 
 Scene case_scene(const std::string& name) {
-  if (name.ends_with(".json")) return load_scene(std::filesystem::path(AIRLIGHT_BENCH_SCENES) / name);
+  if (name.ends_with(".json")) return load_scene(airlight::test::bench_scenes() / name);
   return builtin_scene(name);
 }
 

@@ -5,6 +5,7 @@
 // INSTANTIATE_TEST_SUITE_P(Table, Quality, ::testing::ValuesIn(rows), case_name).
 // Include it from one file per test program.
 #include "core/metrics.hpp"
+#include "core/test_paths.hpp"
 #include "methods/kit/test_support.hpp"
 
 #include <airlight/method.hpp>
@@ -32,7 +33,7 @@ struct Case {
 
 // A case's scene: a built-in, or a file under bench/scenes/ (a name ending in .json).
 inline Scene case_scene(const std::string& name) {
-  if (name.ends_with(".json")) return load_scene(std::filesystem::path(AIRLIGHT_BENCH_SCENES) / name);
+  if (name.ends_with(".json")) return load_scene(airlight::test::bench_scenes() / name);
   return builtin_scene(name);
 }
 
