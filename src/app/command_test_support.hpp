@@ -59,6 +59,19 @@ inline Outcome run_airlight(const std::string& args, const std::string& env = ""
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};
 }
 
+// The methods `airlight list methods` names, `reference` among them unless left out.
+inline std::vector<std::string> listed_methods(bool with_reference = true) {
+  const Outcome o = run_airlight("list methods");
+  std::vector<std::string> names;
+  std::stringstream lines(o.out);
+  for (std::string line; std::getline(lines, line);) {
+    const size_t end = line.find_first_of(" \t");
+    const std::string name = line.substr(0, end);
+    if (!name.empty() && end != std::string::npos && (with_reference || name != "reference")) names.push_back(name);
+  }
+  return names;
+}
+
 // Exit 2 and a message starting "airlight: error: <where>: <key>: " (no key: "<where>: ").
 inline void expect_bad_input(const Outcome& o, const std::string& where, const std::string& key,
                              const std::string& context) {

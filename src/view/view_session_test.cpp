@@ -105,22 +105,11 @@ bool finite(const Image& image) {
   return true;
 }
 
-std::vector<std::string> gpu_methods() {
-  const Outcome o = run_airlight("list methods");
-  std::vector<std::string> names;
-  std::stringstream lines(o.out);
-  for (std::string line; std::getline(lines, line);) {
-    const std::string name = line.substr(0, line.find_first_of(" \t"));
-    if (!name.empty() && name != "reference" && line.find_first_of(" \t") != std::string::npos) names.push_back(name);
-  }
-  return names;
-}
-
 TEST(ViewSession, ScriptedSessionSavesWhatRenderReproduces) {
   REQUIRE_XVFB();
   const fs::path dir = work_dir() / "session";
   fs::create_directories(dir / "saved");
-  const auto methods = gpu_methods();
+  const auto methods = listed_methods(false);
   ASSERT_GE(methods.size(), 10u);
   std::string script = "frame\nscreenshot " + (dir / "steps64.exr").string() + "\n";
   script += "set steps 4\nframe\nscreenshot " + (dir / "steps4.exr").string() + "\n";
@@ -183,6 +172,28 @@ TEST(ViewSession, ErrorAgainstTheBackgroundReference) {
   std::printf("rRMSE against the reference: steps=64 %.4f, steps=4 %.4f\n", defaults, few);
   EXPECT_LT(defaults, 0.1);
   EXPECT_GT(few, defaults);
+}
+
+// A scene without lights (every glTF model without KHR_lights_punctual) opens
+// and shows its surfaces, lit by the ambient term alone, in every method.
+TEST(ViewSession, SceneWithoutLightsShowsItsSurfaces) {
+  REQUIRE_XVFB();
+  const fs::path scene = write_file("no_lights.json", R"({"format": "airlight-scene/1", "ambient": 0.5,
+      "medium": {"scattering": 0.05}, "objects": [{"shape": "box", "min": [-2, 0, -2], "max": [2, 1, 2]}]})");
+  const auto methods = listed_methods(false);
+  std::string script;
+  for (const std::string& m : methods)
+    script += "method " + m + "\nframe\nscreenshot " + (work_dir() / ("no_lights_" + m + ".exr")).string() + "\n";
+  const fs::path file = write_file("no_lights.txt", script + "quit\n");
+  // Mesa's shader cache off: the defects of a scene without lights showed only when compiling.
+  const Outcome o = run_airlight("view --scene " + scene.string() + " --size 64x48 --script " + file.string(),
+                                 "DISPLAY=" + xvfb().display() + " MESA_SHADER_CACHE_DISABLE=true");
+  ASSERT_EQ(o.status, 0) << o.err;
+  for (const std::string& m : methods) {
+    const Image image = read_image(work_dir() / ("no_lights_" + m + ".exr"));
+    EXPECT_TRUE(finite(image)) << m;
+    EXPECT_GT(mean(image), 0.0) << m;
+  }
 }
 
 // Progressive rendering: full size at rest, half size (the default moving

@@ -19,6 +19,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -162,6 +163,29 @@ Image read_texture(GLuint texture) {
   return image;
 }
 
+// The engine's colour buffer before the frame: its surfaces' radiance.
+constexpr float engine_surface[4] = {0.5f, 0.25f, 0.125f, 1.0f};
+
+struct EngineImages {
+  Image l_air, t, l;  // L_air, T(d), and the colour buffer after the frame
+};
+
+// One frame into the engine's targets — L_air in RGBA32F, T(d) and the colour
+// buffer in RGBA16F as engines keep them — with the engine's depth and maps.
+EngineImages engine_frame(Method& method, const Scene& scene, const gpu::Texture& depth, const EngineCamera& cam,
+                          const std::vector<std::optional<EngineShadow>>& shadows) {
+  const gpu::Texture airlight = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width, height);
+  const gpu::Texture transmittance = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA16F, width, height);
+  const gpu::Texture colour = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA16F, width, height);
+  glClearTexImage(colour.id(), 0, GL_RGBA, GL_FLOAT, engine_surface);
+  EngineFrame engine;
+  engine.depth = EngineDepth{depth.id(), cam.view, cam.projection, DepthRange::zero_to_one};
+  engine.shadows = shadows;
+  engine.target = {airlight.id(), transmittance.id(), colour.id()};
+  method.render_frame(frame_inputs(scene, width, height), engine);
+  return {read_texture(airlight.id()), read_texture(transmittance.id()), read_texture(colour.id())};
+}
+
 class Engine : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(Engine, OwnDepthAndShadowMapsGiveAirlightsImage) {
@@ -174,18 +198,7 @@ TEST_P(Engine, OwnDepthAndShadowMapsGiveAirlightsImage) {
   const EngineCamera cam = engine_camera(scene.camera);
   const gpu::Texture depth = engine_depth(scene, rays, cam);
   EngineMaps maps = engine_maps(scene, rays);
-  const gpu::Texture airlight = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width, height);
-  const gpu::Texture transmittance = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA16F, width, height);
-  const gpu::Texture colour = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA16F, width, height);
-  const float surface[4] = {0.5f, 0.25f, 0.125f, 1.0f};
-  glClearTexImage(colour.id(), 0, GL_RGBA, GL_FLOAT, surface);
-
-  EngineFrame engine;
-  engine.depth = EngineDepth{depth.id(), cam.view, cam.projection, DepthRange::zero_to_one};
-  engine.shadows = maps.shadows;
-  engine.target = {airlight.id(), transmittance.id(), colour.id()};
-  method->render_frame(frame_inputs(scene, width, height), engine);
-  const Image l_air = read_texture(airlight.id()), t = read_texture(transmittance.id()), l = read_texture(colour.id());
+  const auto [l_air, t, l] = engine_frame(*method, scene, depth, cam, maps.shadows);
   context.check("engine frame");
 
   // The engine's maps are 512² through other projections than airlight's 1024²
@@ -206,13 +219,39 @@ TEST_P(Engine, OwnDepthAndShadowMapsGiveAirlightsImage) {
       for (int c = 0; c < 3; ++c) {
         const double expected_t = std::exp(-scene.medium.sigma_t()[c] * (hit ? hit->t : far));
         ASSERT_NEAR(t.at(i, j)[c], expected_t, 2e-3 * expected_t + 1e-6) << i << "," << j;
-        const double expected_l = surface[c] * t.at(i, j)[c] + l_air.at(i, j)[c];
+        const double expected_l = engine_surface[c] * t.at(i, j)[c] + l_air.at(i, j)[c];
         ASSERT_NEAR(l.at(i, j)[c], expected_l, 2e-3 * expected_l + 1e-6) << i << "," << j;
       }
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Engine, ::testing::Values("teapot_spot", "three_lights"));
+
+// A scene without lights in an engine's frame: no shadow map to give, L_air = 0,
+// and the composite the engine's surface seen through the fog, L_surf·T(d).
+TEST(EngineState, SceneWithoutLightsGivesZeroAirlight) {
+  // Before the process's context exists: every program compiles here, where the
+  // defects of a scene without lights showed (docs/decisions.md "No lights").
+  ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+  gpu::Context& context = gpu::Context::headless();
+  Scene scene = builtin_scene("teapot_spot");
+  scene.lights.clear();
+  auto method = prepared(scene);
+  const reference::RayCaster rays(scene);
+  const EngineCamera cam = engine_camera(scene.camera);
+  const gpu::Texture depth = engine_depth(scene, rays, cam);
+  const auto [l_air, t, l] = engine_frame(*method, scene, depth, cam, {});
+  context.check("engine frame without lights");
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i)
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ(l_air.at(i, j)[c], 0.0f) << i << "," << j;
+        ASSERT_GT(t.at(i, j)[c], 0.0f) << i << "," << j;
+        // RGBA16F targets: half-float rounding, 2^-11 relative.
+        const double expected_l = engine_surface[c] * t.at(i, j)[c];
+        ASSERT_NEAR(l.at(i, j)[c], expected_l, 2e-3 * expected_l + 1e-6) << i << "," << j;
+      }
+}
 
 // What the caller had bound and enabled is bound and enabled again afterwards.
 TEST(EngineState, CallersStateIsRestored) {

@@ -20,7 +20,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) writeonly uniform image2D airlight_out;
 layout(r32ui, binding = 1) readonly uniform uimage2D heads;
 
-uniform int eye_counts[LIGHT_COUNT];  // each light's count at the eye
+uniform int eye_counts[LIGHT_COUNT > 0 ? LIGHT_COUNT : 1];  // each light's count at the eye (GLSL has no empty arrays)
 
 
 float node_t(uint node) { return uintBitsToFloat(nodes[3u * node]); }

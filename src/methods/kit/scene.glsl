@@ -55,7 +55,14 @@ SceneLobe scene_lobes[LOBE_COUNT > 0 ? LOBE_COUNT : 1];
 #define LOAD_VOLUME(v) scene_volumes[v] = volumes[v];
 #define LOAD_LOBE(k) scene_lobes[k] = lobes[k];
 void load_scene() { FOR_EACH_LIGHT(LOAD_LIGHT) FOR_EACH_VOLUME(LOAD_VOLUME) FOR_EACH_LOBE(LOAD_LOBE) }
+#if LIGHT_COUNT > 0
 #define LIGHT(i) scene_lights[i]
+#else
+// No light: nothing reads one, but the helpers that would still compile, and
+// reading the never-written register copy is a compiler warning that the GL
+// debug output reports as an error (docs/decisions.md "No lights").
+#define LIGHT(i) lights[i]
+#endif
 #define VOLUME(v) scene_volumes[v]
 #define LOBE(k) scene_lobes[k]
 #else

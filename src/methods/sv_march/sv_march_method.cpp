@@ -5,6 +5,7 @@
 #include "methods/kit/march_pass.hpp"
 #include "methods/kit/registry.hpp"
 
+#include <algorithm>
 #include <memory>
 
 namespace airlight::methods {
@@ -58,7 +59,7 @@ private:
   // Per pixel and light, layer 2i: the nearest crossing with its shell (+∞ if
   // none), 2i + 1: the farthest (0 if none).
   void draw_bounds(const kit::SceneFrame& frame) {
-    const int layers = 2 * frame.light_count();
+    const int layers = std::max(2 * frame.light_count(), 1);  // a texture has a layer; no light reads it
     if (frame.width() != width_ || frame.height() != height_ || layers != layers_) {
       width_ = frame.width();
       height_ = frame.height();
