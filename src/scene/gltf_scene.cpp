@@ -32,11 +32,17 @@ using scene_json::JsonObject;
 
 std::string indexed(const std::string& array, size_t i) { return array + "[" + std::to_string(i) + "]"; }
 
-// §3.7.2.1: primitive modes.
-std::string mode_name(int mode) {
-  static const char* const names[] = {"points", "lines", "line loop", "line strip",
-                                      "triangles", "triangle strip", "triangle fan"};
-  return mode >= 0 && mode < 7 ? names[mode] : "unknown";
+// §3.7.2.1: a strip's or a fan's vertices as a list of triangles, each wound as
+// the specification orders it (a strip's every other triangle turned back).
+std::vector<uint32_t> triangle_list(int mode, std::vector<uint32_t> v) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) return v;
+  std::vector<uint32_t> list;
+  for (size_t i = 0; i + 2 < v.size(); ++i)
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP)
+      list.insert(list.end(), {v[i], v[i + 1 + i % 2], v[i + 2 - i % 2]});
+    else  // fan
+      list.insert(list.end(), {v[i + 1], v[i + 2], v[0]});
+  return list;
 }
 
 class Reader {
@@ -48,10 +54,14 @@ public:
     if (m_.scenes.empty()) fail("scenes", "the file has no scene: nothing to render");
     const size_t s = m_.defaultScene < 0 ? 0 : size_t(m_.defaultScene);
     if (s >= m_.scenes.size()) fail("scene", "refers to " + indexed("scenes", s) + ", which does not exist");
+    if (m_.scenes.size() > 1)
+      warn(file_, "has " + std::to_string(m_.scenes.size()) + " scenes: rendering " + indexed("scenes", s) +
+                      (m_.defaultScene < 0 ? ", the first (the file names no default)" : ", its default"));
     const tinygltf::Scene& scene = m_.scenes[s];
     for (size_t k = 0; k < scene.nodes.size(); ++k)
       visit(checked_index(scene.nodes[k], m_.nodes.size(), indexed(indexed("scenes", s) + ".nodes", k), "nodes"),
             glm::dmat4(1.0));
+    check_untriangulated();
     if (!camera_) out_.camera = framing_camera();
     read_extras(scene, indexed("scenes", s) + ".extras");
     return std::move(out_);
@@ -69,14 +79,26 @@ private:
   }
 
   // §3.12: an extension the file requires changes what its data means; airlight reads
-  // lights, and material extensions only refine what a Lambertian surface ignores.
+  // lights, and material extensions only refine what a Lambertian surface ignores. The
+  // others — compressed or quantized geometry (Draco, meshopt, KHR_mesh_quantization)
+  // above all — an exporter writes only when asked to.
   void check_required_extensions() const {
     for (size_t i = 0; i < m_.extensionsRequired.size(); ++i) {
       const std::string& name = m_.extensionsRequired[i];
       if (name != "KHR_lights_punctual" && !name.starts_with("KHR_materials_"))
         fail(indexed("extensionsRequired", i),
-             "\"" + name + "\" is not supported (airlight reads KHR_lights_punctual and ignores KHR_materials_*)");
+             "\"" + name + "\" is not supported: export the model again without it (airlight reads "
+             "KHR_lights_punctual and ignores KHR_materials_*)");
     }
+  }
+
+  // Points and lines (§3.7.2.1) have no area to cast a shadow or end a view ray: they
+  // are left out with one warning that counts them, and refused when nothing is left.
+  void check_untriangulated() const {
+    if (untriangulated_ == 0) return;
+    const std::string count = std::to_string(untriangulated_) + " primitive" + (untriangulated_ == 1 ? "" : "s");
+    if (out_.meshes.empty()) fail("meshes", "has no triangles, only " + count + " of points or lines");
+    warn(file_, "skipped " + count + " of points or lines (airlight renders triangles)");
   }
 
   // §3.5.3: a node's matrix, or translation · rotation · scale.
@@ -123,7 +145,7 @@ private:
   View view_of(size_t a, int components, const std::set<int>& component_types, const std::string& what) const {
     const std::string key = indexed("accessors", a);
     const tinygltf::Accessor& acc = m_.accessors[a];
-    if (acc.sparse.isSparse) fail(key, "sparse accessors are not supported");
+    if (acc.sparse.isSparse) fail(key, "is sparse, which airlight does not read: export the model again without sparse accessors");
     if (tinygltf::GetNumComponentsInType(uint32_t(acc.type)) != components ||
         !component_types.contains(acc.componentType))
       fail(key, "must be " + what + " (type " + std::to_string(acc.type) + ", componentType " +
@@ -204,8 +226,12 @@ private:
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const std::string key = indexed(indexed("meshes", mesh_index) + ".primitives", p);
       const tinygltf::Primitive& prim = mesh.primitives[p];
-      if (prim.mode != TINYGLTF_MODE_TRIANGLES)
-        fail(key, "mode " + std::to_string(prim.mode) + " (" + mode_name(prim.mode) + ") is not triangles");
+      if (prim.mode >= TINYGLTF_MODE_POINTS && prim.mode <= TINYGLTF_MODE_LINE_STRIP) {
+        ++untriangulated_;
+        continue;
+      }
+      if (prim.mode < TINYGLTF_MODE_TRIANGLES || prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+        fail(key, "mode " + std::to_string(prim.mode) + " is not a glTF primitive mode");
       const auto position = prim.attributes.find("POSITION");
       if (position == prim.attributes.end()) fail(key, "has no POSITION attribute");
       const size_t position_accessor =
@@ -217,6 +243,7 @@ private:
                                positions.size());
       else
         for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
+      indices = triangle_list(prim.mode, std::move(indices));
       if (indices.size() % 3 != 0) fail(key, "has " + std::to_string(indices.size()) + " indices, not a multiple of 3");
       for (glm::dvec3& q : positions) q = glm::dvec3(world * glm::dvec4(q, 1.0));
 
@@ -383,7 +410,37 @@ private:
   Scene out_;
   bool camera_ = false;
   std::set<size_t> visited_;
+  size_t untriangulated_ = 0;  // primitives of points or lines, left out
 };
+
+// The files a glTF names (its buffers, its images) are read from its own folder or
+// below it, never from ../ or an absolute path: a model from the web must not make
+// airlight read other files. Paths are taken as written: no shell expansion, which
+// tinygltf's own ExpandFilePath does (wordexp).
+struct Folder {
+  std::filesystem::path root;  // the glTF's folder, absolute and normal
+  std::string outside;         // the first path refused, relative to root
+};
+
+bool inside(Folder& folder, const std::string& path) {
+  const std::filesystem::path relative =
+      std::filesystem::absolute(path).lexically_normal().lexically_relative(folder.root);
+  if (!relative.empty() && *relative.begin() != "..") return true;
+  if (folder.outside.empty()) folder.outside = relative.empty() ? path : relative.string();
+  return false;
+}
+
+bool file_exists(const std::string& path, void* folder) {
+  return inside(*static_cast<Folder*>(folder), path) && tinygltf::FileExists(path, nullptr);
+}
+
+std::string expand_path(const std::string& path, void*) { return path; }
+
+bool read_file(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* folder) {
+  return inside(*static_cast<Folder*>(folder), path) && tinygltf::ReadWholeFile(out, error, path, nullptr);
+}
+
+bool write_file(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
 
 // Images play no part: none is decoded.
 bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
@@ -416,6 +473,8 @@ bool is_gltf_file(const std::filesystem::path& file) {
 Scene load_gltf(const std::filesystem::path& file) {
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);
+  Folder folder{std::filesystem::absolute(file).parent_path().lexically_normal(), ""};
+  loader.SetFsCallbacks({file_exists, expand_path, read_file, write_file, &folder});
   loader.SetStoreOriginalJSONForExtrasAndExtensions(true);
   tinygltf::Model model;
   std::string error, warning;  // warnings concern what airlight ignores (images, unknown extensions)
@@ -423,6 +482,10 @@ Scene load_gltf(const std::filesystem::path& file) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   const bool ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
                                 : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
+  if (!folder.outside.empty())
+    throw InputError(file.string(), "uri",
+                     "\"" + folder.outside + "\" is outside the file's folder: airlight reads only the files "
+                     "beside a glTF or in folders below it");
   if (!ok) throw InputError(file.string(), "", "not a valid glTF file: " + plain(error));
   Scene scene = Reader(model, file.string()).read();
   scene.source = file;

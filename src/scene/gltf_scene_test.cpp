@@ -330,6 +330,15 @@ TEST(GltfScene, WithoutFogOrCameraTheMediumIsEmptyAndTheCameraFramesTheMeshes) {
   expect_vec(glm::normalize(s.camera.position - centre), glm::normalize(glm::vec3(0, 0.5f, 1)), 1e-6f);
 }
 
+// The file loads as one mesh of `triangles` triangles, warning `warning` once.
+void expect_one_mesh_and_warning(const fs::path& file, size_t triangles, const std::string& warning) {
+  const CapturedWarnings warnings;
+  const Scene s = load_scene(file);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].triangles.size(), triangles);
+  EXPECT_EQ(warnings.text(), "airlight: warning: " + file.string() + ": " + warning + "\n");
+}
+
 // Zero-area triangles are skipped with one warning per primitive that counts them, as an OBJ's,
 // with normals given or not.
 TEST(GltfScene, DegenerateTrianglesAreSkippedWithAWarningThatCountsThem) {
@@ -338,15 +347,8 @@ TEST(GltfScene, DegenerateTrianglesAreSkippedWithAWarningThatCountsThem) {
   for (const bool normals : {false, true}) {
     Gltf g;
     g.node({{"mesh", g.mesh(square, tris, normals ? std::vector<glm::vec3>(4, {0, 0, 1}) : std::vector<glm::vec3>{})}});
-    const fs::path file = g.write(normals ? "slivers_n" : "slivers");
-    std::ostringstream warnings;
-    std::ostream* previous = set_warning_stream(&warnings);
-    const Scene s = load_scene(file);
-    set_warning_stream(previous);
-    ASSERT_EQ(s.meshes.size(), 1u);
-    EXPECT_EQ(s.meshes[0].triangles.size(), 2u);
-    EXPECT_EQ(warnings.str(), "airlight: warning: " + file.string() +
-                                  ": meshes[0].primitives[0]: skipped 2 degenerate triangles (zero area)\n");
+    expect_one_mesh_and_warning(g.write(normals ? "slivers_n" : "slivers"), 2,
+                                "meshes[0].primitives[0]: skipped 2 degenerate triangles (zero area)");
   }
 }
 
@@ -412,6 +414,60 @@ TEST(GltfScene, BlendersExportLoadsWithTheValuesSetInBlender) {
   expect_vec(s.ambient, glm::vec3(0.02f), 0.0f);
 }
 
+// §3.7.2.1: a strip's and a fan's triangles are the list's, each wound as the
+// specification orders them (so every face keeps the normal's side).
+TEST(GltfScene, TriangleStripsAndFansReadAsTriangles) {
+  const std::vector<glm::vec3> square = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  const auto load = [&](int mode, const std::vector<uint16_t>& indices) {
+    Gltf g;
+    g.node({{"mesh", g.mesh(square, indices)}});
+    g.json["meshes"][0]["primitives"][0]["mode"] = mode;
+    return load_scene(g.write("mode" + std::to_string(mode)));
+  };
+  for (const Scene& s : {load(5, {0, 1, 2, 3}), load(6, {1, 3, 2, 0})}) {
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const Mesh& m = s.meshes[0];
+    ASSERT_EQ(m.triangles.size(), 2u);
+    for (const glm::uvec3& t : m.triangles) {  // counter-clockwise seen from +z, as the list's
+      const glm::vec3 n = glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
+      EXPECT_GT(n.z, 0.0f);
+      EXPECT_NEAR(glm::length(n), 1.0f, 1e-6f);  // each half of the unit square
+    }
+  }
+}
+
+// Points and lines beside triangles: left out, one warning counting them.
+TEST(GltfScene, PointsAndLinesAreSkippedWithAWarningThatCountsThem) {
+  Gltf g;
+  g.node({{"mesh", g.mesh(triangle, {0, 1, 2})}});
+  Json lines = g.json["meshes"][0]["primitives"][0];
+  lines["mode"] = 1;
+  Json points = lines;
+  points["mode"] = 0;
+  g.json["meshes"][0]["primitives"].push_back(lines);
+  g.json["meshes"][0]["primitives"].push_back(points);
+  expect_one_mesh_and_warning(g.write("points_and_lines"), 1,
+                              "skipped 2 primitives of points or lines (airlight renders triangles)");
+}
+
+// Several scenes: the default one, or the first, with a note saying which.
+TEST(GltfScene, OfSeveralScenesTheDefaultOrTheFirstIsRendered) {
+  for (const bool named : {true, false}) {
+    Gltf g;
+    g.node({{"mesh", g.mesh(triangle, {0, 1, 2})}});
+    g.json["scenes"].push_back({{"nodes", Json::array()}});  // scenes[1]: empty
+    if (named) g.json["scene"] = 1;
+    else g.json.erase("scene");
+    const fs::path file = g.write(named ? "default_scene" : "first_scene");
+    const CapturedWarnings warnings;
+    const Scene s = load_scene(file);
+    EXPECT_EQ(s.meshes.size(), named ? 0u : 1u);
+    EXPECT_EQ(warnings.text(), "airlight: warning: " + file.string() + ": has 2 scenes: rendering " +
+                                  (named ? "scenes[1], its default" : "scenes[0], the first (the file names no default)") +
+                                  "\n");
+  }
+}
+
 // ---- malformed files ----
 
 struct Malformed {
@@ -437,8 +493,18 @@ TEST_P(GltfMalformed, FailsNamingTheFileAndTheElement) {
 INSTANTIATE_TEST_SUITE_P(
     Elements, GltfMalformed,
     testing::Values(
-        Malformed{"lines", [](Gltf& g) { g.json["meshes"][0]["primitives"][0]["mode"] = 1; },
-                  "meshes[0].primitives[0]", "mode 1 (lines) is not triangles"},
+        Malformed{"lines", [](Gltf& g) { g.json["meshes"][0]["primitives"][0]["mode"] = 1; }, "meshes",
+                  "has no triangles, only 1 primitive of points or lines"},
+        Malformed{"mode", [](Gltf& g) { g.json["meshes"][0]["primitives"][0]["mode"] = 7; },
+                  "meshes[0].primitives[0]", "mode 7 is not a glTF primitive mode"},
+        Malformed{"sparse",
+                  [](Gltf& g) {
+                    g.json["accessors"][0]["sparse"] = {
+                        {"count", 1},
+                        {"indices", {{"bufferView", 1}, {"componentType", 5123}}},
+                        {"values", {{"bufferView", 0}}}};
+                  },
+                  "accessors[0]", "is sparse, which airlight does not read: export the model again without sparse accessors"},
         Malformed{"no_position", [](Gltf& g) { g.json["meshes"][0]["primitives"][0]["attributes"].erase("POSITION"); },
                   "meshes[0].primitives[0]", "has no POSITION attribute"},
         Malformed{"nan",
@@ -458,8 +524,19 @@ INSTANTIATE_TEST_SUITE_P(
         Malformed{"required_extension",
                   [](Gltf& g) { g.json["extensionsRequired"] = {"KHR_draco_mesh_compression"}; },
                   "extensionsRequired[0]",
-                  "\"KHR_draco_mesh_compression\" is not supported (airlight reads KHR_lights_punctual and "
-                  "ignores KHR_materials_*)"},
+                  "\"KHR_draco_mesh_compression\" is not supported: export the model again without it (airlight "
+                  "reads KHR_lights_punctual and ignores KHR_materials_*)"},
+        Malformed{"meshopt", [](Gltf& g) { g.json["extensionsRequired"] = {"EXT_meshopt_compression"}; },
+                  "extensionsRequired[0]",
+                  "\"EXT_meshopt_compression\" is not supported: export the model again without it (airlight "
+                  "reads KHR_lights_punctual and ignores KHR_materials_*)"},
+        Malformed{"quantization", [](Gltf& g) { g.json["extensionsRequired"] = {"KHR_mesh_quantization"}; },
+                  "extensionsRequired[0]",
+                  "\"KHR_mesh_quantization\" is not supported: export the model again without it (airlight "
+                  "reads KHR_lights_punctual and ignores KHR_materials_*)"},
+        Malformed{"outside", [](Gltf& g) { g.json["images"] = {{{"uri", "../outside.png"}}}; }, "uri",
+                  "\"../outside.png\" is outside the file's folder: airlight reads only the files beside a glTF "
+                  "or in folders below it"},
         Malformed{"cycle", [](Gltf& g) { g.json["nodes"][0]["children"] = {0}; }, "nodes[0]",
                   "is reached twice from the scene (a node has at most one parent)"},
         Malformed{"missing_light",

@@ -10,10 +10,13 @@
 #include <cfloat>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 #include <tiny_obj_loader.h>
 
 namespace airlight::scene_mesh {
@@ -185,6 +188,43 @@ void check_vertex_text(const std::string& text, const std::string& file) {
   }
 }
 
+std::string counted(size_t n, const std::string& what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
+
+// Lines (l) and points (p) have no area to cast a shadow or end a view ray: left
+// out, with one warning that counts them.
+void warn_lines_and_points(const std::vector<tinyobj::shape_t>& shapes, const std::string& file) {
+  size_t lines = 0, points = 0;
+  for (const tinyobj::shape_t& shape : shapes) {
+    lines += shape.lines.num_line_vertices.size();
+    points += shape.points.indices.size();
+  }
+  if (lines + points > 0)
+    warn(file, "skipped " + counted(lines, "line") + " and " + counted(points, "point") + " (airlight renders faces)");
+}
+
+// Materials play no part (an object's albedo comes from the scene file), so a
+// usemtl whose .mtl file is missing is no error; the warning says it is ignored.
+void warn_missing_materials(const std::string& text, const std::filesystem::path& file) {
+  std::istringstream lines(text);
+  std::vector<std::string> libraries;
+  bool uses = false, found = false;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string tag;
+    words >> tag;
+    uses = uses || tag == "usemtl";
+    if (tag != "mtllib") continue;
+    for (std::string name; words >> name;) {
+      libraries.push_back(name);
+      found = found || std::filesystem::exists(file.parent_path() / name);
+    }
+  }
+  if (uses && !found)
+    warn(file.string(), "usemtl without its material file (" +
+                            (libraries.empty() ? std::string("no mtllib line") : libraries.front() + " is not there") +
+                            "): materials are ignored, the object's albedo applies");
+}
+
 std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string(), "", "cannot read the file");
@@ -221,7 +261,10 @@ Mesh load_obj(const std::filesystem::path& file) {
       builder.face(corners, ++face_number);
     }
   }
-  return builder.finish(file.filename().string());
+  Mesh mesh = builder.finish(file.filename().string());
+  warn_lines_and_points(reader.GetShapes(), file.string());
+  warn_missing_materials(text, file);
+  return mesh;
 }
 
 }  // namespace airlight::scene_mesh

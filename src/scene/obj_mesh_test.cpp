@@ -33,17 +33,7 @@ std::string obj_text(const Mesh& mesh) {
   return text.str();
 }
 
-// What warnings a load writes, instead of stderr.
-class Warnings {
-public:
-  Warnings() : previous_(set_warning_stream(&text_)) {}
-  ~Warnings() { set_warning_stream(previous_); }
-  std::string text() const { return text_.str(); }
-
-private:
-  std::ostringstream text_;
-  std::ostream* previous_;
-};
+using Warnings = CapturedWarnings;
 
 TEST(ObjMesh, LoadsQuadsAsTrianglesWithSmoothNormals) {
   const Mesh cube = load_obj(data_dir() / "cube.obj");
@@ -143,6 +133,46 @@ INSTANTIATE_TEST_SUITE_P(ObjMesh, BadObjVertex, ::testing::ValuesIn(kBadVertices
 TEST(ObjMesh, MissingVertexNamesTheFileAndFace) {
   const auto file = data_dir() / "bad_index.obj";
   EXPECT_TRUE(throws_input_error([&] { load_obj(file); }, file.string(), "face 1", "refers to a missing vertex"));
+}
+
+// OBJ's relative indices: -1 is the last vertex written so far.
+TEST(ObjMesh, NegativeIndicesCountBackFromTheLastVertex) {
+  const auto file = write_obj("relative.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf -3 -2 -1\nv 0 1 0\nf 1 3 -1\n");
+  const Mesh mesh = load_obj(file);
+  ASSERT_TRUE(well_formed(mesh));
+  ASSERT_EQ(mesh.triangles.size(), 2u);
+  const auto corner = [&](size_t t, int k) { return mesh.positions[mesh.triangles[t][k]]; };
+  EXPECT_EQ(corner(0, 2), glm::vec3(1, 1, 0));
+  EXPECT_EQ(corner(1, 2), glm::vec3(0, 1, 0));
+}
+
+// Lines and points have no area: left out, counted in one warning; the faces load.
+TEST(ObjMesh, LinesAndPointsAreSkippedWithAWarningThatCountsThem) {
+  const auto file = write_obj("lines.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2\nl 2 3 1\np 1\nf 1 2 3\n");
+  const Warnings warnings;
+  const Mesh mesh = load_obj(file);
+  EXPECT_EQ(mesh.triangles.size(), 1u);
+  EXPECT_EQ(warnings.text(), "airlight: warning: " + file.string() +
+                                 ": skipped 2 lines and 1 point (airlight renders faces)\n");
+  const auto only = write_obj("only_lines.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n");
+  EXPECT_TRUE(throws_input_error([&] { load_obj(only); }, only.string(), "", "has no faces"));
+}
+
+// Materials play no part: a usemtl whose .mtl is missing loads, saying so once.
+TEST(ObjMesh, UsemtlWithoutItsMaterialFileIsIgnoredWithAWarning) {
+  const std::string faces = "v 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl red\nf 1 2 3\nusemtl blue\nf 1 3 2\n";
+  const auto missing = write_obj("materials.obj", "mtllib missing.mtl\n" + faces);
+  const Warnings warnings;
+  EXPECT_EQ(load_obj(missing).triangles.size(), 2u);
+  const auto no_library = write_obj("no_mtllib.obj", faces);
+  EXPECT_EQ(load_obj(no_library).triangles.size(), 2u);
+  EXPECT_EQ(warnings.text(),
+            "airlight: warning: " + missing.string() +
+                ": usemtl without its material file (missing.mtl is not there): materials are ignored, the "
+                "object's albedo applies\n"
+                "airlight: warning: " + no_library.string() +
+                ": usemtl without its material file (no mtllib line): materials are ignored, the object's "
+                "albedo applies\n");
 }
 
 TEST(ObjMesh, UnreadableFileNamesTheFile) {
