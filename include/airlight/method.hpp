@@ -48,7 +48,9 @@ FrameInputs frame_inputs(const Scene& scene, int width, int height);
 // Throws InputError("frame", key) for inputs that do not fit the prepared
 // scene: a size outside 1–16384, a transform count other than the mesh count,
 // non-finite numbers, a zero light direction, a cone outside (0, 180], a
-// negative colour or coefficient. Every render_frame checks this first.
+// negative colour or coefficient, and every other value the scene loader
+// checks (phase lobes, light model, gobo_up, beams). Every render_frame checks
+// this first.
 void check_frame_inputs(const Scene& scene, const FrameInputs& inputs);
 
 // The scene a frame shows: the inputs' camera, lights, medium and light model,
@@ -76,6 +78,7 @@ struct FrameNumbers {
 class Method {
 public:
   virtual ~Method() = default;
+  // Keeps what it needs of `scene`: the caller may drop it once this returns.
   virtual void prepare(const Scene& scene) = 0;
   // Renders a frame of the prepared scene; its images stay where the method
   // keeps them until read_back(). Throws Failure before prepare().

@@ -41,23 +41,19 @@ bool inside_pyramid(const geometry::BeamPolygon& base, const Light& light, const
 
 void LitPyramids::prepare(const Scene& scene) {
   casters_.clear();
-  caster_meshes_.clear();
   for (size_t m = 0; m < scene.meshes.size(); ++m)
-    if (scene.meshes[m].casts_shadows) {
-      casters_.push_back(&scene.meshes[m]);
-      caster_meshes_.push_back(static_cast<int>(m));
-    }
+    if (scene.meshes[m].casts_shadows)
+      casters_.push_back({static_cast<int>(m), scene.meshes[m].positions, scene.meshes[m].triangles});
 }
 
 std::vector<geometry::BeamPolygon> LitPyramids::world_polygons(const FrameInputs& inputs) const {
   std::vector<geometry::BeamPolygon> polygons;
-  for (size_t c = 0; c < casters_.size(); ++c) {
-    const Mesh& mesh = *casters_[c];
-    const glm::dmat4 m = inputs.transforms.empty() ? glm::dmat4(1.0) : glm::dmat4(inputs.transforms[caster_meshes_[c]]);
-    for (const glm::uvec3& t : mesh.triangles) {
+  for (const Caster& caster : casters_) {
+    const glm::dmat4 m = inputs.transforms.empty() ? glm::dmat4(1.0) : glm::dmat4(inputs.transforms[caster.mesh]);
+    for (const glm::uvec3& t : caster.triangles) {
       geometry::BeamPolygon p;
-      p.source = caster_meshes_[c];
-      for (int k = 0; k < 3; ++k) p.vertices.push_back(glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[t[k]]), 1.0)));
+      p.source = caster.mesh;
+      for (int k = 0; k < 3; ++k) p.vertices.push_back(glm::dvec3(m * glm::dvec4(glm::dvec3(caster.positions[t[k]]), 1.0)));
       polygons.push_back(std::move(p));
     }
   }

@@ -19,7 +19,8 @@ namespace airlight::methods {
 
 class LitPyramids {
 public:
-  // The casters' triangles (Mesh::casts_shadows), in object space.
+  // The casters' triangles (Mesh::casts_shadows), in object space: copied, so
+  // that the caller need not keep the scene after prepare() (docs/design.md §3).
   void prepare(const Scene& scene);
 
   // The frame's beam trees (timed as build_s) and pyramids, and each light's
@@ -36,8 +37,12 @@ private:
   void add_pyramids(const geometry::ConformingSet& set, const Light& light, int index);
   void add_face(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, int index);
 
-  std::vector<const Mesh*> casters_;
-  std::vector<int> caster_meshes_;  // index into Scene::meshes per caster
+  struct Caster {
+    int mesh;  // index into Scene::meshes (and FrameInputs::transforms)
+    std::vector<glm::vec3> positions;
+    std::vector<glm::uvec3> triangles;
+  };
+  std::vector<Caster> casters_;
   std::vector<kit::CountedTriangle> triangles_;
   std::vector<int> eye_counts_;
   double build_s_ = 0.0;

@@ -4,13 +4,16 @@
 #include <airlight/method.hpp>
 
 #include "gpu/context.hpp"
+#include "scene/light_defaults.hpp"
 
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
+#include <sstream>
 #include <string>
+#include <utility>
 
 namespace airlight {
 
@@ -26,6 +29,47 @@ void require(bool ok, const std::string& key, const std::string& what) {
   if (!ok) throw InputError("frame", key, what);
 }
 
+// A number as the loader's messages show it: "0.05", "1e+39", "nan".
+std::string number_text(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+std::string index(const std::string& key, size_t i) { return key + "[" + std::to_string(i) + "]"; }
+
+// The checks the scene loader makes of a phase function (docs/scene-format.md), per lobe.
+void check_phase(const Phase& phase, const std::string& key) {
+  double total = 0.0;
+  for (size_t k = 0; k < phase.lobes.size(); ++k) {
+    const PhaseLobe& lobe = phase.lobes[k];
+    const std::string lobe_key = index(key + ".lobes", k);
+    require(lobe.g > -1.0f && lobe.g < 1.0f, lobe_key + ".g", "must be in (-1, 1), got " + number_text(lobe.g));
+    require(lobe.weight >= 0.0f && lobe.weight <= 1.0f, lobe_key + ".weight",
+            "must be in [0, 1], got " + number_text(lobe.weight));
+    total += lobe.weight;
+  }
+  // The loader's tolerance: weights written with four decimals sum to 1.
+  require(!phase.lobes.empty() && std::fabs(total - 1.0) <= 1e-4, key + ".lobes",
+          "the weights must sum to 1, not " + number_text(total));
+}
+
+// gobo_up orients a gobo and a beam (docs/design.md §1): a direction not parallel to the light's.
+void check_gobo_up(const Light& light, const std::string& key) {
+  require(finite(light.gobo_up) && glm::length(light.gobo_up) > 0.0f, key + ".gobo_up", "must be finite and not zero");
+  if (light.gobo || light.beam)
+    require(!scene_light::parallel(light.gobo_up, light.direction), key + ".gobo_up",
+            "must not be parallel to direction");
+}
+
+void check_beam(const Beam& beam, const std::string& key) {
+  require(finite(beam.origin), key + ".origin", "must be finite");
+  require(beam.size.x > 0.0f && beam.size.y > 0.0f && std::isfinite(beam.size.x) && std::isfinite(beam.size.y),
+          key + ".size", "must be finite and > 0, got [" + number_text(beam.size.x) + ", " + number_text(beam.size.y) + "]");
+  require(beam.length > 0.0f && std::isfinite(beam.length), key + ".length",
+          "must be finite and > 0, got " + number_text(beam.length));
+}
+
 void check_light(const Light& light, const std::string& key) {
   require(finite(light.position) && finite(light.direction) && finite(light.intensity) && finite(light.irradiance),
           key, "position, direction and colour must be finite");
@@ -36,6 +80,8 @@ void check_light(const Light& light, const std::string& key) {
   require(light.cone_deg > 0.0f && light.cone_deg <= 180.0f, key + ".cone_deg",
           "must be in (0, 180], got " + std::to_string(light.cone_deg));
   require(light.edge_deg >= 0.0f && light.edge_deg <= light.cone_deg, key + ".edge_deg", "must be in [0, cone_deg]");
+  check_gobo_up(light, key);
+  if (light.beam) check_beam(*light.beam, key + ".beam");
 }
 
 }  // namespace
@@ -52,11 +98,15 @@ void check_frame_inputs(const Scene& scene, const FrameInputs& in) {
               "transforms[" + std::to_string(m) + "]", "must be finite");
   require(finite(in.camera.position) && finite(in.camera.look_at) && finite(in.camera.up), "camera",
           "position, look_at and up must be finite");
-  for (size_t i = 0; i < in.lights.size(); ++i) check_light(in.lights[i], "lights[" + std::to_string(i) + "]");
+  for (size_t i = 0; i < in.lights.size(); ++i) check_light(in.lights[i], index("lights", i));
   const Medium& m = in.medium;
   require(finite(m.sigma_s) && finite(m.sigma_a) && glm::all(glm::greaterThanEqual(m.sigma_s, glm::vec3(0.0f))) &&
               glm::all(glm::greaterThanEqual(m.sigma_a, glm::vec3(0.0f))),
           "medium", "sigma_s and sigma_a must be finite and not negative");
+  check_phase(m.phase, "medium.phase");
+  for (const auto& [coefficient, name] : {std::pair{in.light_model.a0, "a0"}, std::pair{in.light_model.a1, "a1"}})
+    require(coefficient >= 0.0f && std::isfinite(coefficient), std::string("light_model.") + name,
+            "must be finite and >= 0, got " + number_text(coefficient));
 }
 
 Scene posed_scene(const Scene& scene, const FrameInputs& inputs) {

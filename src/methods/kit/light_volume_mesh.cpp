@@ -1,5 +1,6 @@
 #include "methods/kit/light_volume_mesh.hpp"
 
+#include "core/warning.hpp"
 #include "geometry/camera.hpp"
 #include "gpu/program.hpp"
 #include "methods/kit/shadow_projection.hpp"
@@ -87,7 +88,7 @@ std::vector<SettingSpec> light_volume_settings(int default_resolution) {
   using T = SettingSpec::Type;
   return {{"volume_resolution", T::integer, static_cast<double>(default_resolution), 32, 4096, {},
            "cells per side of the grid each shadow map (or cube face) is turned into for the light volume mesh "
-           "(Kingston §4.3.1, McCool 2000), clamped to the map's resolution: 2R² triangles per map, 12R² per cube "
+           "(Kingston §4.3.1, McCool 2000), clamped to the map's resolution with a warning: 2R² triangles per map, 12R² per cube "
            "(light_volume's mesh; sv_march's shell twice that)"}};
 }
 
@@ -158,6 +159,11 @@ void LightVolumeMesh::build(const SceneFrame& frame) {
   map_size_ = std::max(maps ? bound_texture_size(binding::shadow_maps, GL_TEXTURE_BINDING_2D_ARRAY) : 0,
                        cubes ? bound_texture_size(binding::shadow_cubes, GL_TEXTURE_BINDING_CUBE_MAP_ARRAY) : 0);
   grid_ = std::max(1, std::min(resolution_, map_size_));
+  if (resolution_ > map_size_ && map_size_ > 0 && map_size_ != clamped_to_) {  // said once per map size
+    clamped_to_ = map_size_;
+    warn("volume_resolution", std::to_string(resolution_) + " is above the shadow maps' " + std::to_string(map_size_) +
+                                  ": the grid is " + std::to_string(grid_) + ", a vertex per texel (what a map holds)");
+  }
   triangle_count_ = 0;
   for (LightRange& range : ranges_) {
     range.first = triangle_count_;

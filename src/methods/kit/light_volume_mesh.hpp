@@ -121,6 +121,7 @@ private:
   int resolution_;
   Depth depth_;
   int grid_ = 0, map_size_ = 0;
+  int clamped_to_ = 0;  // the map size the last clamping warning named
   GLsizei triangle_count_ = 0, triangle_capacity_ = 0, max_records_ = 0;
   std::vector<LightRange> ranges_;
   gpu::Texture vertices_, cell_low_, cell_high_;

@@ -3,6 +3,7 @@
 // its error falls as the map's grows; the eye inside the lit volume and inside
 // a shadow.
 #include "core/metrics.hpp"
+#include "core/warning.hpp"
 #include "methods/kit/test_support.hpp"
 
 #include <airlight/method.hpp>
@@ -49,6 +50,25 @@ TEST(LightVolume, ErrorFallsWithTheMapsResolution) {
   // Measured 0.0063, 0.0028, 0.0017, 0.0011: the texels along the teapot's
   // shadow edges, where a face of the height field cuts each texel diagonally.
   EXPECT_LT(previous, 0.002);
+}
+
+// A grid finer than the map holds nothing more (a vertex per texel): it is
+// clamped to the map, said once in a warning, not silently.
+TEST(LightVolume, AGridFinerThanTheMapIsClampedWithAWarning) {
+  const Scene scene = builtin_scene("teapot_spot");
+  const CapturedWarnings warnings;
+  auto method = prepared(find_method("light_volume"), scene, {"shadow_resolution=128", "volume_resolution=512"});
+  const FrameImages first = airlight::render(*method, scene, 32, 24);
+  const FrameImages second = airlight::render(*method, scene, 32, 24);
+  EXPECT_EQ(warnings.text(), "airlight: warning: volume_resolution: 512 is above the shadow maps' 128: the grid is "
+                            "128, a vertex per texel (what a map holds)\n");
+  const auto triangles = [](const FrameImages& f) {
+    for (const auto& [name, value] : f.stats)
+      if (name == "volume_triangles") return value;
+    return -1.0;
+  };
+  EXPECT_EQ(triangles(first), 2.0 * 128 * 128 + 4 * 128);  // one spot's map: 2R² + 4R (its rim) at R = 128
+  EXPECT_EQ(triangles(second), triangles(first));
 }
 
 // biri_sphere seen from an eye moved to `position`, looking at `look_at`: the
