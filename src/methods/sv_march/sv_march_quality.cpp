@@ -11,6 +11,8 @@ const Case rows[] = {
   {"sv_march", "teapot_spot", {}, 0.002, "the teapot's shadow edges, 64 steps across its shell (measured 0.0011)"},
   {"sv_march", "biri_sphere", {}, 0.02, "the sphere's shadow cone, whose shell reaches the floor, with the apex in view "
                                         "(measured 0.0073)"},
+  // Over 20 s with Mesa's shader cache off: a spot's, a point's cube and a directional
+  // light's maps in one program, compiled for the first frame (docs/decisions.md "Build").
   {"sv_march", "three_lights", {}, 0.01, "three kinds of maps, a point light's cube among them (measured 0.0046)"},
 };
 // clang-format on

@@ -50,6 +50,8 @@ TEST_P(SvMarchScenes, NoWorseThanRaymarchAtEqualSteps) {
   }
 }
 
+// three_lights takes over 20 s with Mesa's shader cache off: both methods' programs
+// for its three kinds of maps, at three N, and the fine reference (docs/decisions.md "Build").
 INSTANTIATE_TEST_SUITE_P(Scenes, SvMarchScenes, ::testing::Values("teapot_spot", "biri_sphere", "three_lights"),
                          [](const auto& info) { return std::string(info.param); });
 
