@@ -7,7 +7,6 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <set>
-#include <sstream>
 #include <vector>
 
 namespace airlight::scene_json {
@@ -35,12 +34,6 @@ std::string list_text(std::span<const std::string> names) {
 }
 
 }  // namespace
-
-std::string number_text(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
 
 // Where the parser is, as a key path ("medium.scattering", "lights[1]"), so that
 // an error the lexer raises (a number overflowing to infinity) still names its key.

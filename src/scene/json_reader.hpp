@@ -2,6 +2,8 @@
 // Typed, strict access to parsed JSON for the scene loader. Every failure
 // throws InputError(file, key, message) where key is the path of the offending
 // value, e.g. "lights[1].cone_deg" or "camera.position[2]".
+#include "core/number_text.hpp"
+
 #include <airlight/scene.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -22,8 +24,7 @@ using Json = nlohmann::json;
 // Parses JSON text; syntax errors and duplicate keys throw InputError(file, ...).
 Json parse_json_text(const std::string& text, const std::string& file);
 
-// A number as messages show it: "0.05", "1e+39".
-std::string number_text(double x);
+using airlight::number_text;
 
 // An interval of allowed numbers; bounds may be open or closed, or infinite.
 struct Interval {

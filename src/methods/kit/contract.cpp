@@ -3,6 +3,7 @@
 #include <airlight/error.hpp>
 #include <airlight/method.hpp>
 
+#include "core/number_text.hpp"
 #include "gpu/context.hpp"
 #include "scene/light_defaults.hpp"
 
@@ -11,7 +12,6 @@
 #include <glm/vector_relational.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
-#include <sstream>
 #include <string>
 #include <utility>
 
@@ -27,13 +27,6 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 
 void require(bool ok, const std::string& key, const std::string& what) {
   if (!ok) throw InputError("frame", key, what);
-}
-
-// A number as the loader's messages show it: "0.05", "1e+39", "nan".
-std::string number_text(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
 }
 
 std::string index(const std::string& key, size_t i) { return key + "[" + std::to_string(i) + "]"; }
