@@ -27,4 +27,10 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// The GPU (or, on llvmpipe, the process) ran out of memory: GL_OUT_OF_MEMORY.
+class OutOfMemory : public Failure {
+public:
+  using Failure::Failure;
+};
+
 }  // namespace airlight

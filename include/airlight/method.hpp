@@ -98,6 +98,20 @@ public:
 // have been prepared with `scene`.
 FrameImages render(Method& method, const Scene& scene, int width, int height, bool surface = true);
 
+// Memory a frame needs beyond the per-pixel estimate: how many bytes, what
+// they hold, the setting that sizes them (empty when the scene alone does: its
+// lights, casters or triangles), and the largest single GL buffer and texture
+// among them (an implementation caps each object's size, whatever the memory).
+struct MemoryNeed {
+  std::string setting;
+  std::string what;  // "the light volume meshes of 1 cube map (6 faces × 2·2048² triangles), 80 bytes a triangle"
+  double bytes = 0.0;
+  double largest_buffer = 0.0, largest_texture = 0.0;
+};
+
+// A method's MemoryNeeds for a frame of a scene at width × height.
+using MemoryEstimate = std::function<std::vector<MemoryNeed>(const Scene&, const Settings&, int width, int height)>;
+
 struct MethodInfo {
   std::string name;
   std::string source;       // the document it comes from
@@ -109,6 +123,11 @@ struct MethodInfo {
   // margin (docs/decisions.md, "Memory per pixel"). Sizes are refused up front
   // when this times the pixel count exceeds the memory available.
   int bytes_per_pixel = 0;
+  // The frame's buffers that the settings and the scene size (shadow maps,
+  // crossing pools, meshes, ...), at width × height: with bytes_per_pixel, what
+  // a caller checks against the memory it has before any GL allocation. Empty
+  // for a method whose memory is all per pixel.
+  MemoryEstimate memory;
 };
 
 // Every registered method, in the order of docs/design.md §3.

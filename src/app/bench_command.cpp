@@ -233,9 +233,12 @@ Measurement measure(const Variant& variant, const Scene& scene, Size size, const
   m.baseline = m.method == "raymarch" && variant.settings.choice("jitter") == "none" &&
                variant.settings.choice("sampling") == "uniform";
   const double gpu_before = static_cast<double>(gpu::allocated_bytes());
-  auto method = variant.method->create(variant.settings);
-  method->prepare(scene);
-  const FrameImages last = time_frames(*method, scene, size, is_reference ? 0 : o.warmup, m.frames, gpu_before, &m);
+  FrameImages last;
+  with_memory_hint(scene, size, {variant.method, &variant.settings}, [&] {
+    auto method = variant.method->create(variant.settings);
+    method->prepare(scene);
+    last = time_frames(*method, scene, size, is_reference ? 0 : o.warmup, m.frames, gpu_before, &m);
+  });
   m.peak_rss_mib = peak_rss_mib();
   m.stats = last.stats;
   for (const auto& [name, value] : last.stats)
@@ -431,12 +434,22 @@ void check_outputs(const BenchOptions& o, const std::vector<Size>& sizes, const 
   for (const Size& size : sizes) check_memory("--sizes", size, methods, 2);
 }
 
+// Every run on every scene and size, the reference's two images kept beside it.
+void check_frame_memory(const std::vector<Scene>& scenes, const std::vector<Size>& sizes,
+                        const std::vector<Variant>& variants) {
+  std::vector<MethodRun> runs;
+  for (const auto& v : variants) runs.push_back({v.method, &v.settings});
+  for (const Scene& scene : scenes)
+    for (const Size& size : sizes) app::check_frame_memory(scene, "--sizes", size, runs, 2, true);
+}
+
 void bench(const BenchOptions& o) {
   const std::vector<Variant> variants = plan_variants(o);
   std::vector<Size> sizes;
   for (const auto& text : o.sizes) sizes.push_back(parse_size(text, "--sizes"));
   check_outputs(o, sizes, variants);
   const std::vector<Scene> scenes = load_scenes(o);
+  check_frame_memory(scenes, sizes, variants);
   const std::vector<Measurement> rows = run_bench(o, scenes, sizes, variants);
   write_measurements(o.csv, rows);
   if (!o.plot.empty()) write_plots(o.plot, rows);

@@ -131,13 +131,15 @@ Result method_result(const Entry& entry, const Scene& scene, Size size, Pass pas
   r.method = entry.info->name;
   r.settings = entry.settings.describe();
   r.changed = changed_settings(*entry.info, entry.settings);
-  auto method = entry.info->create(entry.settings);
-  auto start = std::chrono::steady_clock::now();
-  method->prepare(scene);
-  r.prepare_s = seconds_since(start);
-  start = std::chrono::steady_clock::now();
-  r.image = select_pass(render(*method, scene, size.width, size.height, pass != Pass::airlight), pass);
-  r.render_s = seconds_since(start);
+  with_memory_hint(scene, size, {entry.info, &entry.settings}, [&] {
+    auto method = entry.info->create(entry.settings);
+    auto start = std::chrono::steady_clock::now();
+    method->prepare(scene);
+    r.prepare_s = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    r.image = select_pass(render(*method, scene, size.width, size.height, pass != Pass::airlight), pass);
+    r.render_s = seconds_since(start);
+  });
   return r;
 }
 
@@ -200,6 +202,14 @@ void check_outputs(const CompareOptions& o, Size size, const std::vector<Entry>&
   check_memory("--size", size, methods, static_cast<int>(entries.size()) + 2);
 }
 
+// The reference at its defaults (what the cache renders with), then the entries.
+std::vector<MethodRun> runs(const std::vector<Entry>& entries) {
+  static const Settings reference_defaults(find_method("reference").settings);
+  std::vector<MethodRun> all{{&find_method("reference"), &reference_defaults}};
+  for (const auto& e : entries) all.push_back({e.info, &e.settings});
+  return all;
+}
+
 void compare(const CompareOptions& o) {
   // Every argument is checked before the first (slow) render.
   const Size size = parse_size(o.size, "--size");
@@ -207,6 +217,7 @@ void compare(const CompareOptions& o) {
   check_outputs(o, size, entries);
   const Pass pass = o.pass == "composite" ? Pass::composite : Pass::airlight;
   const Scene scene = o.scene.load();
+  check_frame_memory(scene, "--size", size, runs(entries), static_cast<int>(entries.size()) + 2, true);
   std::vector<Result> results{
       reference_result(scene, size, pass, o.cache.empty() ? reference::default_cache_dir() : fs::path(o.cache))};
   {

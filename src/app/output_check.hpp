@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,27 @@ std::uint64_t memory_available();
 // `kept_images` RGB float images held across them, fits in memory_available().
 void check_memory(const std::string& option, Size size, const std::vector<const MethodInfo*>& methods,
                   int kept_images = 0);
+
+// One method with its settings, as a command runs it.
+struct MethodRun {
+  const MethodInfo* info = nullptr;
+  const Settings* settings = nullptr;
+};
+
+// After the scene is loaded and before any GL allocation: each run's frame of
+// `size` (its bytes per pixel and its MethodInfo::memory), plus `kept_images`,
+// fits in memory_available(). Refuses with what takes the most: the size, the
+// setting that sizes the largest buffer ("--set: key=value", or
+// "method.key=value" when `qualified`), or the scene when its lights or
+// casters alone do.
+void check_frame_memory(const Scene& scene, const std::string& size_option, Size size, const std::vector<MethodRun>& runs,
+                        int kept_images = 0, bool qualified = false);
+
+// For a GL_OUT_OF_MEMORY that happened anyway: the run's largest buffer and
+// the setting that sizes it, e.g. "the largest buffer: ... (volume_resolution=2048)".
+std::string memory_hint(const Scene& scene, Size size, const MethodRun& run);
+
+// Runs `render`, adding memory_hint to an OutOfMemory it throws.
+void with_memory_hint(const Scene& scene, Size size, const MethodRun& run, const std::function<void()>& render);
 
 }  // namespace airlight::app

@@ -80,6 +80,118 @@ TEST(OutputCheck, SizeBeyondTheMemoryExitsTwoBeforeAnyOpenGl) {
   EXPECT_FALSE(fs::exists(work_dir() / "big.png"));
 }
 
+// Settings that size large buffers, refused after the scene is read and before
+// any OpenGL (the no-GL environment would exit 1), naming the setting and what
+// it sizes (MethodInfo::memory): one case per kind of buffer a method declares.
+TEST(OutputCheck, SettingsBeyondTheMemoryExitTwoBeforeAnyOpenGl) {
+  const std::string out = " --size 64x48 --out " + (work_dir() / "big.png").string();
+  const auto memory = [](int mib) { return no_gl() + " AIRLIGHT_MEMORY_MIB=" + std::to_string(mib); };
+  const std::string meshes =
+      "the light volume meshes of 1 cube map (6 faces × 2·1024² triangles), 1 spot map (2·1024² triangles and the "
+      "sides) and 1 directional map (2·1024² triangles and the sides), 80 bytes a triangle";
+  expect_refused("render --builtin three_lights --method light_volume --set volume_resolution=1024" + out,
+                 "--set: volume_resolution=1024: light_volume needs about 1.4 GiB of memory, 1.3 GiB of it for " +
+                     meshes + ", more than the 1.0 GiB available",
+                 memory(1024));
+  expect_refused("render --builtin three_lights --method sv_march --set volume_resolution=512" + out,
+                 "--set: volume_resolution=512: sv_march needs about 749 MiB of memory, 713 MiB of it for the shells "
+                 "of 1 cube map (6 faces × 4·512² triangles), 1 spot map (4·512² triangles and the sides) and 1 "
+                 "directional map (4·512² triangles and the sides), 80 bytes a triangle, more than the 512 MiB "
+                 "available",
+                 memory(512));
+  expect_refused("render --builtin teapot_spot --method raymarch --set shadow_resolution=8192" + out,
+                 "--set: shadow_resolution=8192: raymarch needs about 513 MiB of memory, 512 MiB of it for the shadow "
+                 "maps of 1 light (1 map, 8192² texels of 4 bytes each), more than the 256 MiB available",
+                 memory(256));
+  expect_refused("render --builtin teapot_spot --method shadow_planes --set capacity=256 --size 256x192 --out " +
+                     (work_dir() / "big.png").string(),
+                 "--set: capacity=256: shadow_planes needs about 164 MiB of memory, 142 MiB of it for its crossing pool "
+                 "(256 crossings of 12 bytes per pixel at 256x192), more than the 128 MiB available",
+                 memory(128));
+  expect_refused("render --builtin nilsson_multiple --method hybrid --set planes=8192" + out,
+                 "--set: planes=8192: hybrid needs about 618 MiB of memory, 609 MiB of it for the slab regions of "
+                 "8192 planes across the bounding volumes of 26 casters (about 3 KB per plane and caster), more than "
+                 "the 256 MiB available",
+                 memory(256));
+  // The scene alone: beam_volumes' trees grow with the casters' triangles and the lights.
+  expect_refused("render --builtin toth_hall --method beam_volumes" + out,
+                 "--builtin: toth_hall: beam_volumes needs about 190 MiB of memory, 158 MiB of it for the beam trees "
+                 "and pyramids of 66308 caster triangles and 1 light (about 2.5 KB per triangle and light), more than "
+                 "the 64 MiB available",
+                 memory(64));
+  // compare, bench and view check the same, compare and bench with the method's name in front.
+  const std::string qualified = "--set: light_volume.volume_resolution=1024: light_volume needs about 1.4 GiB of "
+                                "memory, 1.3 GiB of it for " + meshes + ", more than the 1.0 GiB available";
+  expect_refused("compare --builtin three_lights --methods raymarch,light_volume:volume_resolution=1024" + out,
+                 qualified, memory(1024));
+  expect_refused("bench --builtin three_lights --methods light_volume --sweep light_volume.volume_resolution=64,1024 "
+                 "--sizes 64x48 --csv " + (work_dir() / "big.csv").string(),
+                 qualified, memory(1024));
+  expect_refused("view --builtin three_lights --method light_volume --set volume_resolution=1024 --size 64x48",
+                 "--set: volume_resolution=1024: light_volume needs about 1.4 GiB of memory, 1.3 GiB of it for " +
+                     meshes + ", more than the 1.0 GiB available",
+                 memory(1024));
+  EXPECT_FALSE(fs::exists(work_dir() / "big.png"));
+  EXPECT_FALSE(fs::exists(work_dir() / "big.csv"));
+}
+
+// One OpenGL object holds less than 4 GiB (a buffer) or 2 GiB (a texture) on
+// Mesa, whatever the memory: refused up front too, as the no-GL environment shows.
+TEST(OutputCheck, ObjectsBeyondOneOpenGlObjectExitTwoBeforeAnyOpenGl) {
+  const std::string out = " --out " + (work_dir() / "big.png").string();
+  const std::string plenty = no_gl() + " AIRLIGHT_MEMORY_MIB=1000000";
+  expect_refused("render --builtin three_lights --method light_volume --set volume_resolution=2048 --set "
+                 "shadow_resolution=2048 --size 64x48" + out,
+                 "--set: volume_resolution=2048: light_volume needs 5.0 GiB in one OpenGL buffer for the light volume "
+                 "meshes of 1 cube map (6 faces × 2·2048² triangles), 1 spot map (2·2048² triangles and the sides) "
+                 "and 1 directional map (2·2048² triangles and the sides), 80 bytes a triangle, more than the 4.0 GiB "
+                 "one buffer holds on Mesa",
+                 plenty);
+  // Two point lights' cubes share one texture array: 12 faces of 7000² floats.
+  const fs::path scene = write_file("two_points.json", R"({"format": "airlight-scene/1",
+    "camera": {"position": [0, 1, 5], "look_at": [0, 1, 0]}, "medium": {"scattering": 0.05},
+    "lights": [{"type": "point", "position": [-1, 2, 0], "intensity": 10},
+               {"type": "point", "position": [1, 2, 0], "intensity": 10}],
+    "objects": [{"shape": "box", "min": [-2, 0, -2], "max": [2, 0.1, 2]}]})");
+  expect_refused("render --scene " + scene.string() + " --method raymarch --set shadow_resolution=7000 --size 64x48" + out,
+                 "--set: shadow_resolution=7000: raymarch needs 2.2 GiB in one OpenGL texture for the shadow maps of "
+                 "2 lights (2 cubes of 6 faces, 7000² texels of 4 bytes each), more than the 2.0 GiB one texture holds "
+                 "on Mesa",
+                 plenty);
+  expect_refused("render --builtin teapot_spot --method raymarch --size 12000x12000" + out,
+                 "--size: 12000x12000: one RGBA float target of this size is 2.1 GiB, more than the 2.0 GiB one OpenGL "
+                 "texture holds on Mesa",
+                 plenty);
+  EXPECT_FALSE(fs::exists(work_dir() / "big.png"));
+}
+
+// What the estimate misses still ends in a message, not a crash: with the
+// address space capped below the mesh's buffer and the check told there is
+// plenty, Mesa's GL_OUT_OF_MEMORY is reported in those words with the setting
+// that sized the buffer, exit 1. (A sanitizer build reserves terabytes of
+// address space up front and cannot start under such a cap: the control
+// below tells which.)
+TEST(OutputCheck, AnOutOfMemoryThatStillHappensNamesTheSetting) {
+  const std::string cap = "ulimit -v 1100000; AIRLIGHT_MEMORY_MIB=1000000 ";
+  const auto run = [&](const std::string& args) {
+    const std::string command = cap + airlight_exe().string() + " " + args + " >/dev/null 2>" +
+                                (work_dir() / "oom.txt").string();
+    const int raw = std::system(command.c_str());  // sh -c: the cap holds for this command alone
+    return Outcome{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, "", read_text(work_dir() / "oom.txt")};
+  };
+  if (run("list scenes").status != 0) GTEST_SKIP() << "this build cannot start in 1.1 GB of address space";
+  // 2·2048² triangles of 80 bytes: a 705 MiB buffer.
+  const Outcome o = run("render --builtin teapot_spot --method light_volume --set volume_resolution=2048 --set "
+                        "shadow_resolution=2048 --size 32x24 --out " + (work_dir() / "oom.pfm").string());
+  EXPECT_EQ(o.status, 1) << o.err;
+  EXPECT_EQ(o.err.rfind("airlight: failure: out of memory (GL_OUT_OF_MEMORY) in render:", 0), 0u) << o.err;
+  EXPECT_NE(o.err.find("705 MiB of it for the light volume meshes of 1 spot map (2·2048² triangles and the sides), 80 "
+                       "bytes a triangle: the setting most likely responsible is volume_resolution=2048"),
+            std::string::npos)
+      << o.err;
+  EXPECT_FALSE(fs::exists(work_dir() / "oom.pfm"));
+}
+
 // 16384² is the largest size the command parses: 40 GiB by raymarch, more than
 // these machines have, refused on the machine's own available memory.
 TEST(OutputCheck, TheLargestSizeIsRefusedUpFrontOnThisMachine) {

@@ -116,6 +116,12 @@ const std::map<std::string, Example>& examples() {
       {"airlight: error: --size: 16384x16384: needs about 40.0 GiB of memory (raymarch: 160 bytes per pixel), more "
        "than the 21.5 GiB available",
        {{}, "render --builtin teapot_spot --method raymarch --size 16384x16384 --out x.png"}},
+      {"airlight: error: --set: volume_resolution=4096: light_volume needs about 2.9 GiB of memory, 2.8 GiB of it for "
+       "the light volume meshes of 1 spot map (2·4096² triangles and the sides), 80 bytes a triangle, more than the "
+       "1.0 GiB available",
+       {{},
+        "render --builtin teapot_spot --method light_volume --set shadow_resolution=4096 --set volume_resolution=4096 "
+        "--out x.png"}},
       {"airlight: error: --sweep: steps: must be in [1, 4096], got 0",
        {{}, "bench --builtin teapot_spot --methods raymarch --sweep raymarch.steps=4,0 --csv b.csv"}},
       {"airlight: warning: mesh.obj: skipped 3 degenerate triangles (zero area)",

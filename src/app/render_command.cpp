@@ -85,14 +85,20 @@ void render(const RenderOptions& o) {
   if (!o.report.empty()) check_output_file("--report", o.report, {".json"});
   check_memory("--size", size, {&info});
   const Scene scene = o.scene.load();
-  auto method = info.create(settings);
-  auto start = std::chrono::steady_clock::now();
-  method->prepare(scene);
-  const double prepare_s = seconds_since(start);
-  start = std::chrono::steady_clock::now();
+  const MethodRun run{&info, &settings};
+  check_frame_memory(scene, "--size", size, {run});
   const Pass pass = parse_pass(o.pass);
-  const FrameImages frame = airlight::render(*method, scene, size.width, size.height, pass != Pass::airlight);
-  const double render_s = seconds_since(start);
+  double prepare_s = 0.0, render_s = 0.0;
+  FrameImages frame;
+  with_memory_hint(scene, size, run, [&] {
+    auto method = info.create(settings);
+    auto start = std::chrono::steady_clock::now();
+    method->prepare(scene);
+    prepare_s = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    frame = airlight::render(*method, scene, size.width, size.height, pass != Pass::airlight);
+    render_s = seconds_since(start);
+  });
   const Image image = select_pass(frame, pass);
   const nlohmann::json output = image_stats(image, o.method);
   const ToneMap tone = o.tone.resolve(image, "render");

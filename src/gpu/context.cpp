@@ -3,6 +3,7 @@
 #include "gpu/gl.hpp"
 
 #include <airlight/error.hpp>
+#include <algorithm>
 
 namespace airlight::gpu {
 
@@ -143,11 +144,15 @@ void Context::check_frame_size(int width, int height) const {
 
 void Context::check(const std::string& where) {
   if (!owned_)
-    for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError()) errors_.push_back("GL error " + std::to_string(e));
+    for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError())
+      errors_.push_back(e == GL_OUT_OF_MEMORY ? "GL_OUT_OF_MEMORY" : "GL error " + std::to_string(e));
   if (errors_.empty()) return;
-  std::string text = "OpenGL error in " + where + ":";
+  const bool memory = std::any_of(errors_.begin(), errors_.end(),
+                                  [](const std::string& e) { return e.find("GL_OUT_OF_MEMORY") != std::string::npos; });
+  std::string text = memory ? "out of memory (GL_OUT_OF_MEMORY) in " + where + ":" : "OpenGL error in " + where + ":";
   for (const auto& e : errors_) text += "\n  " + e;
   errors_.clear();
+  if (memory) throw OutOfMemory(text);
   throw Failure(text);
 }
 

@@ -2,6 +2,7 @@
 
 #include <airlight/error.hpp>
 
+#include <cstdio>
 #include <string>
 #include <unordered_map>
 
@@ -46,6 +47,15 @@ size_t texel_bytes(GLenum format) {
   }
 }
 
+// The object sizes past the implementation's limit (gl.hpp), said as GL_OUT_OF_MEMORY is.
+void check_object_size(double bytes, double limit, const char* object) {
+  if (bytes < limit) return;
+  char text[160];
+  std::snprintf(text, sizeof text, "out of memory (GL_OUT_OF_MEMORY): one OpenGL %s of %.1f GiB, more than the %.0f GiB one %s holds on Mesa",
+                object, bytes / 1073741824.0, limit / 1073741824.0, object);
+  throw OutOfMemory(text);
+}
+
 }  // namespace
 
 namespace detail {
@@ -74,6 +84,7 @@ Sampler make_sampler(GLenum filter) {
 size_t allocated_bytes() { return allocations().total; }
 
 Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags) {
+  check_object_size(double(bytes), max_buffer_bytes + 1.0, "buffer");
   GLuint id = 0;
   glCreateBuffers(1, &id);
   // Zero-sized storage is an error in GL; one byte keeps empty arrays bindable.
@@ -84,14 +95,16 @@ Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags) {
 
 Texture make_texture(GLenum target, GLenum internal_format, int width, int height, int layers) {
   const size_t texel = texel_bytes(internal_format);
+  const size_t planes = target == GL_TEXTURE_CUBE_MAP ? 6 : (target == GL_TEXTURE_2D ? 1 : size_t(layers));
+  const size_t bytes = texel * size_t(width) * size_t(height) * planes;
+  check_object_size(double(bytes), max_texture_bytes, "texture");
   GLuint id = 0;
   glCreateTextures(target, 1, &id);
   if (target == GL_TEXTURE_2D_ARRAY || target == GL_TEXTURE_CUBE_MAP_ARRAY)
     glTextureStorage3D(id, 1, internal_format, width, height, layers);
   else
     glTextureStorage2D(id, 1, internal_format, width, height);
-  const size_t planes = target == GL_TEXTURE_CUBE_MAP ? 6 : (target == GL_TEXTURE_2D ? 1 : size_t(layers));
-  allocations().add(allocations().textures, id, texel * size_t(width) * size_t(height) * planes);
+  allocations().add(allocations().textures, id, bytes);
   glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

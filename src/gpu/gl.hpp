@@ -57,6 +57,13 @@ using Sampler = Object<detail::delete_sampler>;
 using Program = Object<detail::delete_program>;
 using Shader = Object<detail::delete_shader>;
 
+// The largest buffer and texture airlight makes. No GL query tells them: Mesa
+// keeps a buffer's size in 32 bits, and llvmpipe refuses a texture of 2 GiB or
+// more (docs/decisions.md "Memory for settings"). Past them make_buffer and
+// make_texture throw OutOfMemory instead of leaving an object without storage.
+inline constexpr double max_buffer_bytes = 4294967295.0;
+inline constexpr double max_texture_bytes = 2147483648.0;
+
 // Immutable-storage buffer of `bytes`, filled from `data` (or left for glNamedBufferSubData).
 Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
 // A 2D (or cube, 2D array, …) texture with immutable storage and nearest/clamp sampling.

@@ -1,6 +1,7 @@
 // `airlight view` (docs/design.md §5): the options, then the viewer's loop or script.
 #include "app/commands.hpp"
 #include "app/method_settings.hpp"
+#include "app/output_check.hpp"
 #include "app/scene_source.hpp"
 #include "view/script.hpp"
 #include "view/viewer.hpp"
@@ -21,11 +22,14 @@ struct ViewCommandOptions {
 
 void view(ViewCommandOptions o) {
   const Size size = parse_size(o.size, "--size");
-  method_settings(find_method(o.method), o.assignments);  // bad settings exit 2 before a window opens
+  const MethodInfo& info = find_method(o.method);
+  const Settings settings = method_settings(info, o.assignments);  // bad settings exit 2 before a window opens
   if (!o.script.empty() && !std::ifstream(o.script))
     throw InputError("command line", "--script", "cannot read '" + o.script + "'");
   if (o.scene.file.empty() && o.scene.builtin.empty()) o.scene.builtin = default_builtin;
-  view::Viewer viewer({o.scene.load(), o.method, o.assignments, size.width, size.height, o.script.empty()});
+  Scene scene = o.scene.load();
+  check_frame_memory(scene, "--size", size, {{&info, &settings}});
+  view::Viewer viewer({std::move(scene), o.method, o.assignments, size.width, size.height, o.script.empty()});
   if (!o.script.empty()) view::run_script(viewer, o.script);
   while (viewer.open()) viewer.frame();
 }

@@ -1,6 +1,7 @@
 #include "methods/beam_volumes/lit_pyramids.hpp"
 #include "methods/kit/gpu_method.hpp"
 #include "methods/kit/lit_interval_pass.hpp"
+#include "methods/kit/memory_needs.hpp"
 
 #include "gpu/program.hpp"
 #include "methods/kit/registry.hpp"
@@ -91,6 +92,20 @@ private:
   size_t face_capacity_ = 0;
 };
 
+// Per light, the beam tree over every caster triangle, its visible pieces and
+// their pyramids' faces, about four a triangle in one buffer (measured:
+// docs/decisions.md "Memory for settings"); the crossing pool beyond its default.
+std::vector<MemoryNeed> beam_volumes_memory(const Scene& scene, const Settings& s, int width, int height) {
+  constexpr double bytes_per_triangle = 2500.0;
+  const double triangles = kit::caster_triangles(scene), lights = static_cast<double>(scene.lights.size());
+  std::vector<MemoryNeed> needs = kit::crossing_pool_needs(s, width, height);
+  needs.push_back({"",
+                   "the beam trees and pyramids of " + kit::counted(triangles, "caster triangle") + " and " +
+                       kit::counted(lights, "light") + " (about 2.5 KB per triangle and light)",
+                   bytes_per_triangle * triangles * lights, 4.0 * triangles * lights * sizeof(kit::CountedTriangle)});
+  return needs;
+}
+
 MethodInfo beam_volumes_method() {
   using T = SettingSpec::Type;
   std::vector<SettingSpec> own = kit::lit_interval_settings();
@@ -103,7 +118,7 @@ MethodInfo beam_volumes_method() {
           "polygon order): the pyramids between the light and the polygons it sees first, backplate included, "
           "bound its lit region; per pixel the closed-form Γ summed over the lit intervals",
           kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<BeamVolumes>(s); },
-          224};
+          224, kit::gpu_memory(beam_volumes_memory)};
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "gpu/context.hpp"
 #include "gpu/program.hpp"
 #include "gpu/state.hpp"
+#include "methods/kit/memory_needs.hpp"
 
 #include <airlight/error.hpp>
 #include <chrono>
@@ -68,6 +69,16 @@ std::vector<SettingSpec> gpu_settings(std::vector<SettingSpec> own) {
        "self-shadowing at every incidence angle with nearest lookup), medium points compare this much nearer"}};
   specs.insert(specs.end(), own.begin(), own.end());
   return specs;
+}
+
+MemoryEstimate gpu_memory(MemoryEstimate own) {
+  return [own = std::move(own)](const Scene& scene, const Settings& settings, int width, int height) {
+    std::vector<MemoryNeed> needs = shadow_map_needs(scene, settings);
+    needs.push_back(geometry_need(scene));
+    if (own)
+      for (MemoryNeed& need : own(scene, settings, width, height)) needs.push_back(std::move(need));
+    return needs;
+  };
 }
 
 GpuMethod::GpuMethod(const Settings& settings)

@@ -26,6 +26,11 @@ namespace airlight::kit {
 // in front of the method's own: gpu_settings({...own specs...}).
 std::vector<SettingSpec> gpu_settings(std::vector<SettingSpec> own = {});
 
+// MethodInfo::memory of a GPU method: the scene's meshes, the shadow maps,
+// which every frame with a surface term draws whatever the method, and the
+// method's own buffers.
+MemoryEstimate gpu_memory(MemoryEstimate own = {});
+
 class GpuMethod : public Method {
 public:
   explicit GpuMethod(const Settings& settings);

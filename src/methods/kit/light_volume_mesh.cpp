@@ -1,8 +1,10 @@
 #include "methods/kit/light_volume_mesh.hpp"
 
+#include "core/listed.hpp"
 #include "core/warning.hpp"
 #include "geometry/camera.hpp"
 #include "gpu/program.hpp"
+#include "methods/kit/memory_needs.hpp"
 #include "methods/kit/shadow_projection.hpp"
 
 #include <airlight/error.hpp>
@@ -299,6 +301,53 @@ double LightVolumeMesh::seconds() const {
   glGetQueryObjectui64v(started_.id(), GL_QUERY_RESULT, &begin);  // waits for the GPU
   glGetQueryObjectui64v(finished_.id(), GL_QUERY_RESULT, &end);
   return static_cast<double>(end - begin) * 1e-9;
+}
+
+namespace {
+
+// "1 cube map (6 faces × 2·2048² triangles)": a kind's lights and their meshes.
+std::string meshes_text(LightVolumeMesh::Kind kind, int lights, int r, LightVolumeMesh::Depth depth) {
+  using Kind = LightVolumeMesh::Kind;
+  const std::string per_sheet = std::string(depth == LightVolumeMesh::Depth::shell ? "4·" : "2·") + squared(r) + " triangles";
+  const std::string map = kind == Kind::cube ? "cube map" : kind == Kind::spot ? "spot map" : "directional map";
+  return counted(lights, map) + " (" + (kind == Kind::cube ? "6 faces × " + per_sheet : per_sheet + " and the sides") +
+         (lights > 1 ? " each)" : ")");
+}
+
+}  // namespace
+
+// triangles_of for each light, in one buffer, and what allocate() gives the
+// grid's vertices (and, for the shell, its cells' bounds) for the largest kind.
+std::vector<MemoryNeed> light_volume_mesh_needs(const Scene& scene, const Settings& settings, LightVolumeMesh::Depth depth) {
+  using Kind = LightVolumeMesh::Kind;
+  const int r = std::min(settings.integer("volume_resolution"), settings.integer("shadow_resolution"));
+  int lights[4] = {0, 0, 0, 0};  // by Kind
+  const std::vector<int> kinds = shadow_kinds(scene);
+  for (size_t i = 0; i < kinds.size(); ++i) {
+    const bool directional = scene.lights[i].type == LightType::directional;
+    const Kind kind = kinds[i] == shadow_cube  ? Kind::cube
+                      : kinds[i] != shadow_map ? Kind::none
+                      : directional            ? Kind::directional
+                                               : Kind::spot;
+    ++lights[static_cast<int>(kind)];
+  }
+  double triangles = 0.0;
+  std::vector<std::string> meshes;
+  for (const Kind kind : {Kind::cube, Kind::spot, Kind::directional}) {
+    const int n = lights[static_cast<int>(kind)];
+    if (n == 0) continue;
+    triangles += double(n) * triangles_of(kind, r, depth);
+    meshes.push_back(meshes_text(kind, n, r, depth));
+  }
+  if (triangles == 0.0) return {};
+  const bool shell = depth == LightVolumeMesh::Depth::shell;
+  const double layers = (lights[static_cast<int>(Kind::cube)] ? 6.0 : 1.0) * (shell ? 2.0 : 1.0);
+  const double grid = layers * ((r + 1.0) * (r + 1.0) * 16.0 + (shell ? 8.0 * r * r : 0.0));
+  const double buffer = triangles * record_bytes;
+  return {{"volume_resolution",
+           std::string(shell ? "the shells of " : "the light volume meshes of ") + listed(meshes) + ", " +
+               std::to_string(record_bytes) + " bytes a triangle",
+           buffer + grid, buffer, layers * (r + 1.0) * (r + 1.0) * 16.0}};
 }
 
 }  // namespace airlight::kit

@@ -133,4 +133,8 @@ private:
   double wall_seconds_ = 0.0;
 };
 
+// What the meshes of the scene's lights take at the settings' grid
+// (volume_resolution, at most shadow_resolution): a MemoryNeed per map kind.
+std::vector<MemoryNeed> light_volume_mesh_needs(const Scene& scene, const Settings& settings, LightVolumeMesh::Depth depth);
+
 }  // namespace airlight::kit

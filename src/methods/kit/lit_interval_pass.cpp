@@ -3,6 +3,7 @@
 #include "gpu/program.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <numeric>
 #include <glm/geometric.hpp>
 
@@ -46,6 +47,23 @@ std::vector<SettingSpec> lit_interval_settings() {
            "crossings per pixel (on average over the image) the node pool holds at first; a frame with more grows "
            "the pool and draws again, so no crossing is ever dropped (the report's `redraws`)"},
           gamma_samples_setting()};
+}
+
+std::vector<MemoryNeed> crossing_pool_needs(const Settings& settings, int width, int height) {
+  const double measured_with = lit_interval_settings().front().default_value;
+  const double capacity = settings.real("capacity");
+  char per_pixel[32];
+  std::snprintf(per_pixel, sizeof per_pixel, "%g", capacity);
+  return {{"capacity",
+           "its crossing pool (" + std::string(per_pixel) + " crossings of " + std::to_string(node_bytes) +
+               " bytes per pixel at " + std::to_string(width) + "x" + std::to_string(height) + ")",
+           double(width) * height * std::max(capacity - measured_with, 0.0) * node_bytes,
+           double(width) * height * capacity * node_bytes}};
+}
+
+MemoryNeed counted_triangle_need(const std::string& what, double count) {
+  const double buffer = count * sizeof(CountedTriangle);
+  return {"", what, 2.0 * buffer, buffer};
 }
 
 LitIntervalPass::LitIntervalPass(const Settings& s)

@@ -9,6 +9,7 @@
 #include "gpu/timer.hpp"
 #include "methods/kit/scene_frame.hpp"
 
+#include <airlight/method.hpp>
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
 #include <glm/vec4.hpp>
@@ -37,6 +38,12 @@ SettingSpec gamma_samples_setting();
 
 // capacity and samples: the settings of the pass (in front of a method's own).
 std::vector<SettingSpec> lit_interval_settings();
+
+// The crossing pool at width × height: its bytes beyond the default capacity,
+// which the methods' bytes_per_pixel already holds, and its buffer.
+std::vector<MemoryNeed> crossing_pool_needs(const Settings& settings, int width, int height);
+// `count` counted triangles built on the CPU and uploaded: both copies.
+MemoryNeed counted_triangle_need(const std::string& what, double count);
 
 // "#define BINDING_COUNTED n" and the other bindings of lit_intervals.glsl: the
 // counted triangles at binding::first_free_storage, the node pool after them.

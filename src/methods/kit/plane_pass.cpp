@@ -1,6 +1,7 @@
 #include "methods/kit/plane_pass.hpp"
 
 #include "gpu/program.hpp"
+#include "methods/kit/memory_needs.hpp"
 #include "methods/kit/noise.hpp"
 
 #include <algorithm>
@@ -99,6 +100,21 @@ void PlanePass::prepare(const Scene& scene) {
 // A sample lies anywhere in its slab, up to dz/2 in depth, i.e. dz/(2 cos)
 // along its ray, from the middle where the clip distances and the regions are taken.
 float PlanePass::reach(const Slabs& s) const { return 0.5f * s.dz / cos_edge_; }
+
+std::vector<MemoryNeed> slab_region_needs(const Scene& scene, const Settings& settings, int, int) {
+  // Measured per plane and caster, the polygons and their beam-tree pieces
+  // (docs/decisions.md "Memory for settings").
+  constexpr double bytes_per_region = 3000.0;
+  constexpr double bytes_per_buffer = 2.0 * 8 * 3 * sizeof(RegionVertex);  // about 8 triangles, the buffer grown 2×
+  const double spacing = settings.real("spacing"), casters = caster_count(scene);
+  const double planes = std::clamp(spacing > 0.0 ? std::ceil(scene.camera.far / spacing) : settings.integer("planes"),
+                                   1.0, double(max_planes));
+  if (casters == 0.0 || scene.lights.empty()) return {};
+  return {{spacing > 0.0 ? "spacing" : "planes",
+           "the slab regions of " + counted(planes, "plane") + " across the bounding volumes of " +
+               counted(casters, "caster") + " (about 3 KB per plane and caster)",
+           bytes_per_region * planes * casters, bytes_per_buffer * planes * casters}};
+}
 
 PlanePass::Slabs PlanePass::slabs(const LightBounds& volume) const {
   const double depth = lit_far_depth(volume, camera_, far_);

@@ -28,6 +28,10 @@ enum class PlaneRegions { none, clip, gamma };
 // at the middle of its slab: no lattice, no jitter.
 std::vector<SettingSpec> plane_settings(bool regions = false);
 
+// The hybrids' slab regions (SlabRegions, one light at a time): the planes'
+// polygons cut by the casters' bounding volumes, on the CPU and the GPU.
+std::vector<MemoryNeed> slab_region_needs(const Scene& scene, const Settings& settings, int width, int height);
+
 struct PlaneSettings {
   int planes = 100;              // n per light
   double spacing = 0.0;          // dz in metres of view depth; 0: from n

@@ -1,6 +1,7 @@
 #include "methods/kit/gpu_method.hpp"
 #include "methods/kit/light_volume_mesh.hpp"
 #include "methods/kit/lit_interval_pass.hpp"
+#include "methods/kit/memory_needs.hpp"
 #include "methods/kit/registry.hpp"
 
 #include <memory>
@@ -46,6 +47,13 @@ private:
   kit::LitIntervalPass intervals_;
 };
 
+// The meshes of every light's map, and the crossing pool beyond its default.
+std::vector<MemoryNeed> light_volume_memory(const Scene& scene, const Settings& s, int width, int height) {
+  std::vector<MemoryNeed> needs = kit::light_volume_mesh_needs(scene, s, kit::LightVolumeMesh::Depth::texel);
+  for (MemoryNeed& need : kit::crossing_pool_needs(s, width, height)) needs.push_back(std::move(need));
+  return needs;
+}
+
 MethodInfo light_volume_method() {
   std::vector<SettingSpec> own = kit::light_volume_settings(256);
   for (SettingSpec& s : kit::lit_interval_settings()) own.push_back(std::move(s));
@@ -54,7 +62,7 @@ MethodInfo light_volume_method() {
           "lit region on the GPU every frame, the mesh's crossings with each pixel's ray counted into lit "
           "intervals, the closed-form Γ summed over them; nothing marched, no cost per caster triangle",
           kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<LightVolume>(s); },
-          224};
+          224, kit::gpu_memory(light_volume_memory)};
 }
 
 }  // namespace

@@ -35,6 +35,17 @@ private:
   bool rendered_ = false;
 };
 
+// Embree's BVH over every triangle, the prepared copy of the scene and each
+// frame's posed one (measured per triangle: docs/decisions.md "Memory for settings").
+std::vector<MemoryNeed> reference_memory(const Scene& scene, const Settings&, int, int) {
+  constexpr double bytes_per_triangle = 200.0;
+  double triangles = 0.0;
+  for (const Mesh& mesh : scene.meshes) triangles += static_cast<double>(mesh.triangles.size());
+  return {{"", "Embree's BVH and two copies of the scene's " + std::to_string(static_cast<long>(triangles)) +
+                   " triangles (about 200 bytes each)",
+           bytes_per_triangle * triangles}};
+}
+
 MethodInfo reference_method() {
   using T = SettingSpec::Type;
   return {"reference", "docs/design.md §1",
@@ -43,7 +54,7 @@ MethodInfo reference_method() {
            {"min_segments", T::integer, 32, 1, 4096, {},
             "initial panels per ray: shadow features thinner than 1/min_segments of the ray may be missed"}},
           [](const Settings& s) { return std::make_unique<ReferenceMethod>(s); },
-          80};
+          80, reference_memory};
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "methods/kit/gpu_method.hpp"
 #include "methods/kit/lit_interval_pass.hpp"
+#include "methods/kit/memory_needs.hpp"
 #include "methods/shadow_planes/silhouettes.hpp"
 
 #include "methods/kit/registry.hpp"
@@ -41,6 +42,17 @@ private:
   kit::LitIntervalPass intervals_;
 };
 
+// Up to two counted triangles per caster edge and light (silhouettes.cpp), and
+// the crossing pool beyond its default.
+std::vector<MemoryNeed> shadow_planes_memory(const Scene& scene, const Settings& s, int width, int height) {
+  const double triangles = kit::caster_triangles(scene), lights = static_cast<double>(scene.lights.size());
+  std::vector<MemoryNeed> needs = kit::crossing_pool_needs(s, width, height);
+  needs.push_back(kit::counted_triangle_need("the shadow planes of " + kit::counted(triangles, "caster triangle") +
+                                                 " and " + kit::counted(lights, "light") + " (2 triangles per edge)",
+                                             6.0 * triangles * lights));
+  return needs;
+}
+
 MethodInfo shadow_planes_method() {
   return {"shadow_planes", "Biri 2006",
           "exact volumetric shadows from the casters' silhouette edges (every triangle edge of an open caster) "
@@ -50,7 +62,7 @@ MethodInfo shadow_planes_method() {
           "volumes by a sampled ratio",
           kit::gpu_settings(kit::lit_interval_settings()),
           [](const Settings& s) { return std::make_unique<ShadowPlanes>(s); },
-          224};
+          224, kit::gpu_memory(shadow_planes_memory)};
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "methods/kit/light_volume_mesh.hpp"
 #include "methods/kit/lit_interval_pass.hpp"
 #include "methods/kit/march_pass.hpp"
+#include "methods/kit/memory_needs.hpp"
 #include "methods/kit/registry.hpp"
 
 #include <algorithm>
@@ -92,6 +93,17 @@ private:
   double fragments_ = 0.0;
 };
 
+// The shells of every light's map, and the bounds' two layers per light past
+// the one light its bytes_per_pixel was measured with.
+std::vector<MemoryNeed> sv_march_memory(const Scene& scene, const Settings& s, int width, int height) {
+  std::vector<MemoryNeed> needs = kit::light_volume_mesh_needs(scene, s, kit::LightVolumeMesh::Depth::shell);
+  const double more_lights = static_cast<double>(scene.lights.size()) - 1.0;
+  if (more_lights > 0.0)
+    needs.push_back({"", "the shell bounds of " + kit::counted(more_lights + 1.0, "light") + " (8 bytes per pixel each)",
+                     8.0 * width * height * more_lights, 0.0, 8.0 * width * height * (more_lights + 1.0)});
+  return needs;
+}
+
 MethodInfo sv_march_method() {
   std::vector<SettingSpec> own = kit::march_settings();
   // A 64² shell: as close as 256² (rRMSE within 10% on the spots) at a
@@ -103,7 +115,7 @@ MethodInfo sv_march_method() {
           "on the GPU every frame, each pixel's ray marched with shadow-map lookups (raymarch's steps, sampling "
           "and jitter) only between its first and last crossing with it, the closed-form Γ before and after",
           kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<SvMarch>(s); },
-          176};
+          176, kit::gpu_memory(sv_march_memory)};
 }
 
 }  // namespace
