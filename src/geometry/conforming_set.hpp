@@ -22,6 +22,8 @@ public:
 
   // Piece k's loop of welded vertices with every vertex that lies on one of its edges inserted.
   std::vector<int> conforming(size_t k) const;
+  // Piece k's loop of welded vertices as given, nothing inserted.
+  const std::vector<int>& welded(size_t k) const { return loops_[k]; }
   const glm::dvec3& vertex(int id) const { return vertices_[id]; }
   // Whether b lies within the tolerance of the line through a and c.
   bool collinear(int a, int b, int c) const;

@@ -1,5 +1,7 @@
 #include "methods/beam_volumes/lit_pyramids.hpp"
 
+#include "methods/beam_volumes/pyramid_sides.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -37,6 +39,14 @@ bool inside_pyramid(const geometry::BeamPolygon& base, const Light& light, const
   return true;
 }
 
+// How far from a point light its casters reach (1 when there are none).
+double caster_reach(const std::vector<geometry::BeamPolygon>& polygons, const Light& light) {
+  double reach = 1.0;
+  for (const geometry::BeamPolygon& p : polygons)
+    for (const glm::dvec3& v : p.vertices) reach = std::max(reach, glm::distance(v, glm::dvec3(light.position)));
+  return reach;
+}
+
 }  // namespace
 
 void LitPyramids::prepare(const Scene& scene) {
@@ -60,19 +70,21 @@ std::vector<geometry::BeamPolygon> LitPyramids::world_polygons(const FrameInputs
   return polygons;
 }
 
-// A face of a pyramid, its plane oriented out of the pyramid (a, b, c counter-
-// clockwise seen from outside): crossing it inward lowers the light's count
-// by 1, so that inside a pyramid the count is 0 (lit).
-void LitPyramids::add_face(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, int index) {
-  triangles_.push_back({{glm::vec4(a), glm::vec4(b), glm::vec4(c)}, kit::counted_plane(a, b, c), glm::ivec4(index, 1, 0, 0)});
+// A face of the lit region's boundary, its plane oriented out of the region (a,
+// b, c counter-clockwise seen from outside): crossing it inward lowers the
+// light's count by `weight`, so that inside a pyramid the count is 0 (lit).
+void LitPyramids::add_face(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, int index, int weight) {
+  triangles_.push_back(
+      {{glm::vec4(a), glm::vec4(b), glm::vec4(c)}, kit::counted_plane(a, b, c), glm::ivec4(index, weight, 0, 0)});
 }
 
 // The pyramids from the light to the conforming visible set (Nilsson §3.2),
 // or the prisms from it back toward a directional light, to infinity (w = 0):
-// each base, and a side per edge that no neighbour shares (a shared side
-// appears once in each direction and cancels), each wound to face out of its
-// pyramid.
-void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& light, int index) {
+// each base, wound to face out of its pyramid, and the sides that no neighbour
+// shares (a shared side appears once in each direction and cancels), summed
+// plane by plane (pyramid_sides.hpp).
+void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& light, int index, double reach,
+                               double epsilon) {
   const bool directional = light.type == LightType::directional;
   const glm::dvec4 apex = directional ? glm::dvec4(-glm::dvec3(light.direction), 0.0) : glm::dvec4(glm::dvec3(light.position), 1.0);
   std::vector<std::vector<int>> loops;
@@ -89,6 +101,7 @@ void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& 
     loops.push_back(std::move(loop));
   }
   const auto at = [&](int id) { return glm::dvec4(set.vertex(id), 1.0); };
+  std::vector<PyramidSide> sides;
   for (const std::vector<int>& loop : loops) {
     // The base as a fan over its corners alone: the vertices the splits
     // inserted are collinear, and their slivers' planes would be noise.
@@ -96,15 +109,19 @@ void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& 
     for (size_t e = 0; e < loop.size(); ++e)
       if (!set.collinear(loop[(e + loop.size() - 1) % loop.size()], loop[e], loop[(e + 1) % loop.size()]))
         corners.push_back(loop[e]);
-    for (size_t k = 1; k + 1 < corners.size(); ++k) add_face(at(corners[0]), at(corners[k]), at(corners[k + 1]), index);
+    for (size_t k = 1; k + 1 < corners.size(); ++k)
+      add_face(at(corners[0]), at(corners[k]), at(corners[k + 1]), index, 1);
     for (size_t e = 0; e < loop.size(); ++e) {
       const int a = loop[e], b = loop[(e + 1) % loop.size()];
-      // Cancelled only where exactly two pyramids share the side: pieces that
-      // overlap by ε as seen from the light can meet an edge more often.
+      // Cancelled here where exactly two pyramids share the side (pieces that
+      // overlap by ε as seen from the light can meet an edge more often); the
+      // rest are summed plane by plane.
       const auto reverse = edges.find({b, a});
-      if (reverse == edges.end() || reverse->second != 1 || edges[{a, b}] != 1) add_face(at(b), at(a), apex, index);
+      if (reverse == edges.end() || reverse->second != 1 || edges[{a, b}] != 1) sides.push_back({a, b});
     }
   }
+  for (const WeightedTriangle& t : summed_sides(set, sides, apex, reach, epsilon))
+    add_face(t.corners[0], t.corners[1], t.corners[2], index, t.weight);
 }
 
 void LitPyramids::build(const FrameInputs& inputs) {
@@ -126,7 +143,9 @@ void LitPyramids::build(const FrameInputs& inputs) {
     const glm::dvec3 eye(inputs.camera.position);
     for (const geometry::BeamPolygon& p : tree.visible_set())
       if (inside_pyramid(p, light, eye)) eye_counts_[i] = 0;
-    add_pyramids(geometry::ConformingSet(tree.visible_set(), epsilon), light, static_cast<int>(i));
+
+    add_pyramids(geometry::ConformingSet(tree.visible_set(), epsilon), light, static_cast<int>(i),
+                 caster_reach(polygons, light), epsilon);
   }
   build_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -34,8 +34,8 @@ public:
 
 private:
   std::vector<geometry::BeamPolygon> world_polygons(const FrameInputs& inputs) const;
-  void add_pyramids(const geometry::ConformingSet& set, const Light& light, int index);
-  void add_face(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, int index);
+  void add_pyramids(const geometry::ConformingSet& set, const Light& light, int index, double reach, double epsilon);
+  void add_face(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, int index, int weight);
 
   struct Caster {
     int mesh;  // index into Scene::meshes (and FrameInputs::transforms)

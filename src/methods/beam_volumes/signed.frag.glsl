@@ -1,6 +1,6 @@
 // Nilsson 2008 §3.2 (accumulate=signed): per fragment of a lit pyramid's face,
-// ±Γ(0 → min(t, d)) added into a float target by blending — back faces (the
-// ray leaves the pyramid) add, front faces subtract — so that each pixel
+// ±Γ(0 → min(t, d)) times its weight added into a float target by blending —
+// back faces (the ray leaves the pyramid) add, front faces subtract — so that each pixel
 // receives Σ over its lit intervals [t_in, t_out] of Γ(0 → t_out) − Γ(0 → t_in).
 // With the eye inside a pyramid its front face lies behind the eye, and
 // Γ(0 → 0) = 0 is what it would subtract; a face beyond the visible surface
@@ -25,5 +25,5 @@ void main() {
     FOR_EACH_LIGHT(ADD_GAMMA)
 #undef ADD_GAMMA
   }
-  airlight = vec4(x.facing > 0.0 ? sum : -sum, 0.0);
+  airlight = vec4(float(x.c.light_weight.y) * (x.facing > 0.0 ? sum : -sum), 0.0);
 }

@@ -2,9 +2,10 @@
 // in front of the visible surface, appended to the pixel's list, so the order
 // in which triangles are drawn does not matter. t comes from the exact
 // ray–plane intersection, not from interpolated depth. Which pixels' rays
-// cross the triangle: for a triangle drawn grown (crossings.vert.glsl), the
-// watertight ray test (covers); otherwise the rasterizer, watertight along
-// edges that two triangles share. Near-plane clipping is off (GL_DEPTH_CLAMP),
+// cross the triangle: for a triangle with finite corners, drawn to cover them
+// all (crossings.vert.glsl), the watertight ray test (covers); for one with a
+// corner at infinity, the rasterizer, watertight along edges that two
+// triangles share. Near-plane clipping is off (GL_DEPTH_CLAMP),
 // so crossings between the eye and the near plane count too.
 #include "methods/kit/scene.glsl"
 #include "methods/kit/crossing_fragment.glsl"

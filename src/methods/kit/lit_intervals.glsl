@@ -31,11 +31,24 @@ uint pack_crossing(int light, int change) { return (uint(light) << 16) | uint(ch
 int crossing_light(uint bits) { return int(bits >> 16); }
 int crossing_change(uint bits) { return int(bits & 0xffffu) - 32768; }
 
+// An edge's function (a 2×2 determinant of its corners p, q in the sheared
+// frame below), or where that is 0 — the ray on the edge's line — its sign
+// with the ray moved by (1, η), η → 0+ (simulation of simplicity): the two
+// triangles that share an edge get opposite values, so that exactly one
+// holds the ray, and at a shared corner exactly one of those around it. Taking
+// 0 as inside counted a ray along an edge twice. `precise`: a fused
+// multiply–add would round the two orders differently.
+float edge_function(vec2 p, vec2 q) {
+  precise float e = p.x * q.y - p.y * q.x;
+  return e != 0.0 ? e : (p.y != q.y ? p.y - q.y : q.x - p.x);
+}
+
 // Whether the ray from `origin` along `dir` passes through triangle (a, b, c):
 // the watertight test of Woop, Benthin & Wald 2013, in a frame sheared so the
 // ray runs along an axis. An edge's function is a 2×2 determinant of its two
 // corners, so the two triangles that share an edge get exactly opposite
-// values: no ray passes between them.
+// values: no ray passes between them, and none is counted by both. A triangle
+// seen edge-on holds no ray: its functions are not all of one sign.
 bool ray_crosses(vec3 origin, vec3 dir, vec3 a, vec3 b, vec3 c) {
   vec3 d = abs(dir);
   int kz = d.x > d.y ? (d.x > d.z ? 0 : 2) : (d.y > d.z ? 1 : 2);
@@ -50,13 +63,12 @@ bool ray_crosses(vec3 origin, vec3 dir, vec3 a, vec3 b, vec3 c) {
   vec2 A = vec2(pa[kx], pa[ky]) - shear * pa[kz];
   vec2 B = vec2(pb[kx], pb[ky]) - shear * pb[kz];
   vec2 C = vec2(pc[kx], pc[ky]) - shear * pc[kz];
-  float u = C.x * B.y - C.y * B.x, v = A.x * C.y - A.y * C.x, w = B.x * A.y - B.y * A.x;
-  bool negative = u < 0.0 || v < 0.0 || w < 0.0, positive = u > 0.0 || v > 0.0 || w > 0.0;
-  return !(negative && positive) && u + v + w != 0.0;
+  float u = edge_function(C, B), v = edge_function(A, C), w = edge_function(B, A);
+  return (u > 0.0 && v > 0.0 && w > 0.0) || (u < 0.0 && v < 0.0 && w < 0.0);
 }
 
 // Whether a fragment of counted triangle c (crossings.vert.glsl: `exact` when
-// it was drawn grown) stands for a crossing of the pixel's ray along `dir`.
+// its corners are finite) stands for a crossing of the pixel's ray along `dir`.
 bool covers(int exact, CountedTriangle c, vec3 dir) {
   return exact == 0 || ray_crosses(frame.eye, dir, c.corners[0].xyz / c.corners[0].w,
                                    c.corners[1].xyz / c.corners[1].w, c.corners[2].xyz / c.corners[2].w);
