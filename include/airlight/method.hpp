@@ -112,6 +112,23 @@ struct MemoryNeed {
 // A method's MemoryNeeds for a frame of a scene at width × height.
 using MemoryEstimate = std::function<std::vector<MemoryNeed>(const Scene&, const Settings&, int width, int height)>;
 
+// What a method models of the physical model (docs/design.md §1) and what it
+// reads: a scene is judged by a method only with what the method models,
+// against the reference of the same scene with the rest removed (the random
+// scenes' harness). Every GPU method models every light, phase and volume the
+// format has; they differ in shadows and in what they need.
+struct Capabilities {
+  bool volumetric_shadows = true;  // false: L_air as if no caster stood in the lights' way
+  bool engine_maps = true;         // renders from an engine's depth and shadow maps (<airlight/engine.hpp>)
+  bool caster_triangles = false;   // reads the casters' triangles, not the shadow maps alone: costs grow with them
+};
+
+// The scene whose reference a method's image is judged against: the scene
+// with what the method does not model taken out (no caster shadows the lights
+// for a method without volumetric shadows), named after it with what was
+// taken out ("biri_sphere_without_shadows").
+Scene judged_scene(const Scene& scene, const Capabilities& capabilities);
+
 struct MethodInfo {
   std::string name;
   std::string source;       // the document it comes from
@@ -128,6 +145,7 @@ struct MethodInfo {
   // a caller checks against the memory it has before any GL allocation. Empty
   // for a method whose memory is all per pixel.
   MemoryEstimate memory;
+  Capabilities capabilities;
 };
 
 // Every registered method, in the order of docs/design.md §3.

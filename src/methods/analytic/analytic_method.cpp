@@ -75,7 +75,7 @@ MethodInfo analytic_method() {
           "(occluders only end the view ray), and the medium that fills space only: bounded volumes and gobo "
           "colours are ignored",
           kit::gpu_settings(analytic_settings()), [](const Settings& s) { return std::make_unique<Analytic>(s); },
-          128, kit::gpu_memory()};
+          128, kit::gpu_memory(), {.volumetric_shadows = false}};
 }
 
 }  // namespace

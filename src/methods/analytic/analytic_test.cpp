@@ -157,6 +157,22 @@ INSTANTIATE_TEST_SUITE_P(Phases, AnalyticPhase,
 // reference then computes Γ itself, to rel_tol 1e-5 here; every pixel, on
 // either side of every edge, must be within the table's bound plus float
 // rounding (1e-4: Γ's float evaluation and the GPU's float ray).
+// analytic declares no volumetric shadows: on biri_sphere, whose sphere
+// shadows the spot's cone in view, it matches the reference of the scene
+// without shadows (judged_scene), not the scene's own.
+TEST(Analytic, JudgedAgainstTheReferenceWithoutShadows) {
+  const MethodInfo& info = find_method("analytic");
+  ASSERT_FALSE(info.capabilities.volumetric_shadows);
+  const Scene scene = builtin_scene("biri_sphere");
+  const Image image = render(info, scene, {}, 64, 48).airlight;
+  const double judged = compare_images(image, reference_airlight(judged_scene(scene, info.capabilities), 64, 48)).rel_rmse;
+  const double shadowed = compare_images(image, reference_airlight(scene, 64, 48)).rel_rmse;
+  std::printf("analytic on biri_sphere: rRMSE %.5f against the unshadowed reference, %.5f against the scene's\n", judged,
+              shadowed);
+  EXPECT_LT(judged, 0.005);   // Γ in closed form; the reference's rel_tol 1e-3
+  EXPECT_GT(shadowed, 0.05);  // the sphere's shadow across the cone, which analytic cannot show
+}
+
 TEST(Analytic, NoArtefactAtDepthEdges) {
   Scene s;
   s.name = "depth_edges";

@@ -118,7 +118,7 @@ MethodInfo beam_volumes_method() {
           "polygon order): the pyramids between the light and the polygons it sees first, backplate included, "
           "bound its lit region; per pixel the closed-form Γ summed over the lit intervals",
           kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<BeamVolumes>(s); },
-          224, kit::gpu_memory(beam_volumes_memory)};
+          224, kit::gpu_memory(beam_volumes_memory), {.caster_triangles = true}};
 }
 
 }  // namespace

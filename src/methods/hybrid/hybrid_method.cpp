@@ -17,7 +17,7 @@ MethodInfo hybrid_method() {
           "the shadow-map test",
           kit::gpu_settings(kit::plane_settings(true)),
           [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::gamma); },
-          160, kit::gpu_memory(kit::slab_region_needs)};
+          160, kit::gpu_memory(kit::slab_region_needs), {.caster_triangles = true}};
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ MethodInfo hybrid_clip_method() {
           "sampling=plane the image of planes, from fewer fragments",
           kit::gpu_settings(kit::plane_settings(true)),
           [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::clip); },
-          160, kit::gpu_memory(kit::slab_region_needs)};
+          160, kit::gpu_memory(kit::slab_region_needs), {.caster_triangles = true}};
 }
 
 }  // namespace

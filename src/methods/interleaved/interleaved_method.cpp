@@ -70,7 +70,7 @@ MethodInfo interleaved_method() {
           "Heidrich 2001) and gathered by a separable sum, normalized by each pixel's unshadowed ∫I/r² and "
           "depth-aware by default",
           kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<Interleaved>(s); },
-          224, kit::gpu_memory()};
+          224, kit::gpu_memory(), {}};
 }
 
 }  // namespace

@@ -102,6 +102,15 @@ void check_frame_inputs(const Scene& scene, const FrameInputs& in) {
             "must be finite and >= 0, got " + number_text(coefficient));
 }
 
+Scene judged_scene(const Scene& scene, const Capabilities& capabilities) {
+  Scene judged = scene;
+  if (!capabilities.volumetric_shadows) {
+    for (Mesh& mesh : judged.meshes) mesh.casts_shadows = false;
+    judged.name += "_without_shadows";  // another scene: caches keyed by name keep both
+  }
+  return judged;
+}
+
 Scene posed_scene(const Scene& scene, const FrameInputs& inputs) {
   check_frame_inputs(scene, inputs);
   Scene posed = scene;

@@ -62,7 +62,7 @@ MethodInfo light_volume_method() {
           "lit region on the GPU every frame, the mesh's crossings with each pixel's ray counted into lit "
           "intervals, the closed-form Γ summed over them; nothing marched, no cost per caster triangle",
           kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<LightVolume>(s); },
-          224, kit::gpu_memory(light_volume_memory)};
+          224, kit::gpu_memory(light_volume_memory), {}};
 }
 
 }  // namespace

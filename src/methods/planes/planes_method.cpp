@@ -14,7 +14,7 @@ MethodInfo planes_method() {
           "into a float target",
           kit::gpu_settings(kit::plane_settings()),
           [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::none); },
-          160, kit::gpu_memory()};
+          160, kit::gpu_memory(), {}};
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ MethodInfo raymarch_method() {
           "or equiangular about each point and spot light",
           kit::gpu_settings(kit::march_settings()),
           [](const Settings& s) { return std::make_unique<Raymarch>(s); },
-          160, kit::gpu_memory()};
+          160, kit::gpu_memory(), {}};
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ MethodInfo shadow_planes_method() {
           "volumes by a sampled ratio",
           kit::gpu_settings(kit::lit_interval_settings()),
           [](const Settings& s) { return std::make_unique<ShadowPlanes>(s); },
-          224, kit::gpu_memory(shadow_planes_memory)};
+          224, kit::gpu_memory(shadow_planes_memory), {.caster_triangles = true}};
 }
 
 }  // namespace

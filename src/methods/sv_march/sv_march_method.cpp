@@ -115,7 +115,7 @@ MethodInfo sv_march_method() {
           "on the GPU every frame, each pixel's ray marched with shadow-map lookups (raymarch's steps, sampling "
           "and jitter) only between its first and last crossing with it, the closed-form Γ before and after",
           kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<SvMarch>(s); },
-          176, kit::gpu_memory(sv_march_memory)};
+          176, kit::gpu_memory(sv_march_memory), {}};
 }
 
 }  // namespace
