@@ -129,6 +129,22 @@ struct Capabilities {
 // taken out ("biri_sphere_without_shadows").
 Scene judged_scene(const Scene& scene, const Capabilities& capabilities);
 
+// How the random scenes' harness (docs/design.md §6) holds a method to the
+// reference beyond what it asks of every method at its defaults (finite,
+// non-negative, rRMSE ≤ 10 %): at these settings, by this measure, within this
+// bound, for this reason.
+struct Trial {
+  // rel_rmse: docs/design.md §6's rRMSE. worst_pixel: the largest relative error
+  // of a pixel (its largest channel error over its largest reference channel)
+  // among the pixels whose reference reaches 1 % of the image's maximum.
+  enum class Measure { rel_rmse, worst_pixel };
+  std::string name;                   // "exact", "high quality", ...
+  std::vector<std::string> settings;  // key=value over the method's defaults
+  Measure measure = Measure::rel_rmse;
+  double bound = 0.0;
+  std::string reason;
+};
+
 struct MethodInfo {
   std::string name;
   std::string source;       // the document it comes from
@@ -146,6 +162,7 @@ struct MethodInfo {
   // for a method whose memory is all per pixel.
   MemoryEstimate memory;
   Capabilities capabilities;
+  std::vector<Trial> trials;
 };
 
 // Every registered method, in the order of docs/design.md §3.

@@ -2,6 +2,7 @@
 // timed per frame and per pass, with its memory and its error against the
 // cached reference; a CSV, optional log–log plots and an equal-quality table.
 #include "app/commands.hpp"
+#include "app/csv.hpp"
 #include "app/floor.hpp"
 #include "app/measure.hpp"
 #include "app/method_settings.hpp"
@@ -276,14 +277,6 @@ std::vector<Measurement> run_bench(const BenchOptions& o, const std::vector<Scen
 
 // ---- output ---------------------------------------------------------------------
 
-
-// Quoted when it holds a comma or a quote (RFC 4180).
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
 
 void write_csv(const std::filesystem::path& file, const std::vector<std::vector<std::string>>& rows) {
   std::ostringstream out;

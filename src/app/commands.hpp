@@ -13,6 +13,7 @@ Run add_render_command(CLI::App& cli);
 Run add_list_command(CLI::App& cli);
 Run add_compare_command(CLI::App& cli);
 Run add_bench_command(CLI::App& cli);
+Run add_random_command(CLI::App& cli);
 // Defined in src/view (the viewer's layer sits on app's).
 Run add_view_command(CLI::App& cli);
 

@@ -1,6 +1,7 @@
 // `airlight compare` (docs/design.md §5, issue 6): the reference and each named method
 // on one scene at one size, as a contact sheet and a CSV of their errors.
 #include "app/commands.hpp"
+#include "app/csv.hpp"
 #include "app/contact_sheet.hpp"
 #include "app/measure.hpp"
 #include "app/method_settings.hpp"
@@ -146,14 +147,6 @@ Result method_result(const Entry& entry, const Scene& scene, Size size, Pass pas
 void measure(Result& r, const Image& reference, float exposure) {
   r.mean = mean_radiance(r.image, r.method);
   r.error = compare_images(r.image, reference, exposure);
-}
-
-// Settings hold no commas or quotes today, but a choice's text could.
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 // The columns README.md "## Comparing" documents.

@@ -17,6 +17,7 @@ int run(int argc, char** argv) {
       {"list", airlight::app::add_list_command(cli)},
       {"compare", airlight::app::add_compare_command(cli)},
       {"bench", airlight::app::add_bench_command(cli)},
+      {"random", airlight::app::add_random_command(cli)},
       {"view", airlight::app::add_view_command(cli)},
   };
   try {

@@ -30,10 +30,12 @@ set(ALLOW_methods/kit gpu reference scene geometry optics core scene-model)
 # methods/<name>: the kit and everything below it, never another methods/<other>.
 set(ALLOW_methods/*   methods/kit gpu reference scene geometry optics core scene-model)
 # The command and the shared library reach methods only through the registry.
-set(ALLOW_app         methods/kit gpu reference scene geometry optics core scene-model)
+# The random scenes' harness draws scenes and judges methods through the registry.
+set(ALLOW_harness     methods/kit reference scene geometry optics core scene-model)
+set(ALLOW_app         harness methods/kit gpu reference scene geometry optics core scene-model)
 set(ALLOW_lib         methods/kit gpu reference scene geometry optics core scene-model)
 # The viewer is a subcommand on app's helpers (scene source, settings); app never includes it.
-set(ALLOW_view        app methods/kit gpu reference scene geometry optics core scene-model)
+set(ALLOW_view        app harness methods/kit gpu reference scene geometry optics core scene-model)
 
 set(PUBLIC_HEADER_OWNER_error    core)
 set(PUBLIC_HEADER_OWNER_image    core)
@@ -44,7 +46,7 @@ set(PUBLIC_HEADER_OWNER_scene    scene-model)
 set(PUBLIC_HEADER_OWNER_method   methods/kit)  # the method contract, implemented by the kit
 set(PUBLIC_HEADER_OWNER_engine   methods/kit)
 
-set(FOLDERS core optics geometry scene reference gpu methods app view lib)
+set(FOLDERS core optics geometry scene reference gpu methods harness app view lib)
 
 # folder of a path relative to src/ or shaders/ ("methods/raymarch/x.cpp" -> methods/raymarch)
 function(folder_of path out)

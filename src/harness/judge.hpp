@@ -1,0 +1,64 @@
+#pragma once
+// How the random scenes' harness judges a method's airlight image against the
+// reference's (docs/design.md §6): every method at its defaults, then each of
+// its own trials (MethodInfo::trials) by their measure and bound.
+#include <airlight/image.hpp>
+#include <airlight/method.hpp>
+
+#include <string>
+
+namespace airlight::harness {
+
+// W/(m²·sr). Below it a reference is black: rRMSE divides by at least this, and
+// a pixel under it is never judged by its relative error. The generator scales
+// its lights so that airlight is of order 1 (harness/random_scene.cpp), so this
+// is a millionth of a typical image.
+inline constexpr double absolute_floor = 1e-6;
+
+// A configuration whose reference's mean airlight is below this is rejected as
+// invisible: 1/1000 of the order the generator aims at, about 1 % of 8-bit
+// display white at exposure 1 after the sRGB curve — fog no one would see.
+inline constexpr double visible_mean = 1e-3;
+
+// What every method must meet at its defaults: a map-based method at its
+// default settings is held to 10 % (issue 25), far above the quality table's
+// rows, so that only a defect fails it.
+inline constexpr double default_rel_rmse = 0.10;
+
+// The share of the image's maximum above which worst_pixel judges a pixel.
+inline constexpr double judged_share = 0.01;
+
+struct Verdict {
+  std::string trial;    // "defaults" or the trial's name
+  std::string measure;  // "rel_rmse", "worst_pixel", "finite", "zero"
+  double value = 0.0, bound = 0.0;
+  bool pass = false;
+  std::string detail;   // why it failed, in words: "pixel (3, 7) is NaN", "pixel (12, 4): 0.31 against 0.25"
+};
+
+// The mean over pixels and channels.
+double mean(const Image& image);
+// Whether the harness judges methods on `scene` whose reference is `reference`:
+// a scene without lights always (every method must give zero), any other when
+// its fog is visible (mean ≥ visible_mean).
+bool judged(const Scene& scene, const Image& reference);
+
+double rel_rmse(const Image& method, const Image& reference);
+// The largest relative error among the pixels whose largest reference channel
+// reaches judged_share of the image's maximum (and absolute_floor); its pixel.
+struct WorstPixel {
+  double error = 0.0;
+  int x = -1, y = -1;
+};
+WorstPixel worst_pixel(const Image& method, const Image& reference);
+
+// The image has a NaN, an infinity or a negative value: what and where, else empty.
+std::string bad_value(const Image& image);
+
+// At the defaults: finite and non-negative, and either zero where the
+// reference is (a scene without lights) or within default_rel_rmse.
+Verdict judge_defaults(const Image& method, const Image& reference);
+// A trial: finite and non-negative, then its measure within its bound.
+Verdict judge_trial(const Trial& trial, const Image& method, const Image& reference);
+
+}  // namespace airlight::harness

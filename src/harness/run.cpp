@@ -1,0 +1,104 @@
+#include "harness/run.hpp"
+
+#include "reference/reference.hpp"
+
+#include <airlight/error.hpp>
+
+#include <chrono>
+#include <exception>
+
+namespace airlight::harness {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+const Trial* find_trial(const MethodInfo& method, const std::string& name) {
+  for (const Trial& t : method.trials)
+    if (t.name == name) return &t;
+  if (name == "defaults") return nullptr;
+  throw InputError("--trial", name, "is not a trial of " + method.name);
+}
+
+bool fails(const Verdict& v) { return !v.pass; }
+
+// Drops the elements of `list` one at a time, each for good when the scene without it still fails.
+template <class T, class Fails>
+void drop_while_failing(Scene& scene, std::vector<T> Scene::*list, const Fails& still_fails) {
+  for (size_t i = (scene.*list).size(); i-- > 0;) {
+    Scene smaller = scene;
+    (smaller.*list).erase((smaller.*list).begin() + static_cast<long>(i));
+    if (still_fails(smaller)) scene = std::move(smaller);
+  }
+}
+
+}  // namespace
+
+Harness::Harness(std::vector<const MethodInfo*> methods, int width, int height)
+    : methods_(std::move(methods)), width_(width), height_(height) {}
+
+Image Harness::reference(const Scene& scene, const Capabilities& capabilities) const {
+  return reference::render(judged_scene(scene, capabilities), width_, height_).airlight;
+}
+
+Verdict Harness::judge(const Scene& scene, const MethodInfo& method, const Trial* trial, const Image& reference,
+                       double* seconds) const {
+  const std::string name = trial ? trial->name : "defaults";
+  const auto start = std::chrono::steady_clock::now();
+  Image image;
+  try {
+    Settings settings(method.settings);
+    if (trial)
+      for (const std::string& s : trial->settings) settings.set(s, "trial " + trial->name);
+    auto instance = method.create(settings);
+    instance->prepare(scene);
+    image = render(*instance, scene, width_, height_, false).airlight;
+  } catch (const std::exception& e) {  // a valid scene must render: any refusal or failure is the method's defect
+    if (seconds) *seconds = seconds_since(start);
+    return {name, "renders", 0.0, 0.0, false, e.what()};
+  }
+  if (seconds) *seconds = seconds_since(start);
+  return trial ? judge_trial(*trial, image, reference) : judge_defaults(image, reference);
+}
+
+Outcome Harness::judge(const Scene& scene) const {
+  Outcome outcome;
+  const Image full = reference(scene, {});
+  outcome.reference_mean = mean(full);
+  outcome.visible = judged(scene, full);
+  if (!outcome.visible) return outcome;
+  for (const MethodInfo* method : methods_) {
+    const Image own = method->capabilities.volumetric_shadows ? full : reference(scene, method->capabilities);
+    std::vector<const Trial*> trials{nullptr};
+    for (const Trial& t : method->trials) trials.push_back(&t);
+    for (const Trial* t : trials) {
+      Judgement j{method->name, {}, 0.0};
+      j.verdict = judge(scene, *method, t, own, &j.seconds);
+      outcome.judgements.push_back(std::move(j));
+    }
+  }
+  return outcome;
+}
+
+Verdict Harness::judge(const Scene& scene, const MethodInfo& method, const std::string& trial) const {
+  return judge(scene, method, find_trial(method, trial), reference(scene, method.capabilities), nullptr);
+}
+
+// A smaller scene counts only while it is still one the harness would judge:
+// dropping the light that makes the fog visible leaves a near-black reference
+// whose relative errors say nothing.
+Scene Harness::shrink(Scene scene, const MethodInfo& method, const std::string& trial) const {
+  const Trial* t = find_trial(method, trial);
+  const auto still_fails = [&](const Scene& s) {
+    const Image r = reference(s, method.capabilities);
+    return judged(s, r) && fails(judge(s, method, t, r, nullptr));
+  };
+  drop_while_failing(scene, &Scene::lights, still_fails);
+  drop_while_failing(scene, &Scene::meshes, still_fails);
+  drop_while_failing(scene, &Scene::volumes, still_fails);
+  return scene;
+}
+
+}  // namespace airlight::harness
