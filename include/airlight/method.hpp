@@ -115,18 +115,21 @@ using MemoryEstimate = std::function<std::vector<MemoryNeed>(const Scene&, const
 // What a method models of the physical model (docs/design.md §1) and what it
 // reads: a scene is judged by a method only with what the method models,
 // against the reference of the same scene with the rest removed (the random
-// scenes' harness). Every GPU method models every light, phase and volume the
-// format has; they differ in shadows and in what they need.
+// scenes' harness). Every method models every light type, phase sum and light
+// model the format has; they differ in shadows, bounded volumes, gobos and in
+// what they need.
 struct Capabilities {
   bool volumetric_shadows = true;  // false: L_air as if no caster stood in the lights' way
+  bool bounded_volumes = true;     // false: as if only the medium that fills space were there
+  bool gobos = true;               // false: as if no light carried a gobo
   bool engine_maps = true;         // renders from an engine's depth and shadow maps (<airlight/engine.hpp>)
   bool caster_triangles = false;   // reads the casters' triangles, not the shadow maps alone: costs grow with them
 };
 
 // The scene whose reference a method's image is judged against: the scene
 // with what the method does not model taken out (no caster shadows the lights
-// for a method without volumetric shadows), named after it with what was
-// taken out ("biri_sphere_without_shadows").
+// for a method without volumetric shadows, no bounded volume, no gobo), named
+// after it with what was taken out ("biri_sphere_without_shadows").
 Scene judged_scene(const Scene& scene, const Capabilities& capabilities);
 
 // How the random scenes' harness (docs/design.md §6) holds a method to the

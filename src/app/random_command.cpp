@@ -29,7 +29,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RandomOptions {
-  std::string seeds = "0:16", size = "32x24", methods, results, failures = "out/random", scene;
+  std::string seeds = "0:16", size = "32x24", methods, results, failures = "out/random";
+  SceneSource scene;  // --scene or --builtin: judge it instead of random scenes
   bool no_shrink = false;
 };
 
@@ -216,11 +217,9 @@ void run_seeds(const RandomOptions& o, Size size, std::vector<const MethodInfo*>
 }
 
 void run_scene(const RandomOptions& o, Size size, std::vector<const MethodInfo*> methods) {
-  SceneSource source;
-  source.file = o.scene;
-  harness::GeneratedScene g{source.load(), {}, 0};
+  harness::GeneratedScene g{o.scene.load(), {}, 0};
   Judging run(o, size, std::move(methods));
-  std::fputs((header + run.judge(fs::path(o.scene).stem().string(), g)).c_str(), stdout);
+  std::fputs((header + run.judge(g.scene.name, g)).c_str(), stdout);
   if (run.failed() > 0) throw Failure(std::to_string(run.failed()) + " judgements failed");
 }
 
@@ -229,7 +228,7 @@ void random_command(const RandomOptions& o) {
   std::vector<const MethodInfo*> methods = judged_methods(o.methods);
   if (!o.results.empty()) check_output_file("--results", o.results, {".csv"});
   check_output_dir("--failures", o.failures);
-  if (o.scene.empty())
+  if (o.scene.file.empty() && o.scene.builtin.empty())
     run_seeds(o, size, std::move(methods));
   else
     run_scene(o, size, std::move(methods));
@@ -242,7 +241,9 @@ Run add_random_command(CLI::App& cli) {
   auto* command = cli.add_subcommand(
       "random", "judge every method against the reference on seeded random scenes (or one scene file)");
   command->add_option("--seeds", o->seeds, "FIRST:END: the seeds FIRST to END − 1")->capture_default_str();
-  command->add_option("--scene", o->scene, "judge this scene file instead of random scenes (a failure's reproduction)");
+  auto* file = command->add_option("--scene", o->scene.file,
+                                   "judge this scene file instead of random scenes (a failure's reproduction)");
+  command->add_option("--builtin", o->scene.builtin, "judge this built-in scene instead of random scenes")->excludes(file);
   command->add_option("--methods", o->methods, "the methods to judge, separated by ',' (default: all)");
   command->add_option("--size", o->size, "image size WxH")->capture_default_str();
   command->add_option("--results", o->results,

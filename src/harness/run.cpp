@@ -70,7 +70,8 @@ Outcome Harness::judge(const Scene& scene) const {
   outcome.visible = judged(scene, full);
   if (!outcome.visible) return outcome;
   for (const MethodInfo* method : methods_) {
-    const Image own = method->capabilities.volumetric_shadows ? full : reference(scene, method->capabilities);
+    const Image own = judged_scene(scene, method->capabilities).name == scene.name ? full
+                                                                                : reference(scene, method->capabilities);
     std::vector<const Trial*> trials{nullptr};
     for (const Trial& t : method->trials) trials.push_back(&t);
     for (const Trial* t : trials) {

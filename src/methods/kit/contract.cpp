@@ -7,6 +7,7 @@
 #include "gpu/context.hpp"
 #include "scene/light_defaults.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
@@ -104,9 +105,19 @@ void check_frame_inputs(const Scene& scene, const FrameInputs& in) {
 
 Scene judged_scene(const Scene& scene, const Capabilities& capabilities) {
   Scene judged = scene;
+  // Each is another scene: caches keyed by name keep them apart.
   if (!capabilities.volumetric_shadows) {
     for (Mesh& mesh : judged.meshes) mesh.casts_shadows = false;
-    judged.name += "_without_shadows";  // another scene: caches keyed by name keep both
+    judged.name += "_without_shadows";
+  }
+  if (!capabilities.bounded_volumes && !judged.volumes.empty()) {
+    judged.volumes.clear();
+    judged.name += "_without_volumes";
+  }
+  const bool gobos = std::any_of(judged.lights.begin(), judged.lights.end(), [](const Light& l) { return l.gobo; });
+  if (!capabilities.gobos && gobos) {
+    for (Light& light : judged.lights) light.gobo = nullptr;
+    judged.name += "_without_gobos";
   }
   return judged;
 }

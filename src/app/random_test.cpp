@@ -1,0 +1,59 @@
+// `airlight random` end to end: its bad input, a scene file judged (a
+// failure's reproduction), and a results file that a rerun resumes.
+#include "app/command_test_support.hpp"
+
+namespace airlight {
+namespace {
+
+using namespace test;
+
+TEST(RandomCommand, SeedsOutOfOrderAreBadInput) {
+  const Outcome o = run_airlight("random --seeds 5:5");
+  expect_bad_input(o, "--seeds", "5:5", "an empty range");
+  EXPECT_NE(o.err.find("expected FIRST:END, whole numbers with FIRST < END (seeds FIRST to END − 1)"),
+            std::string::npos) << o.err;
+  expect_bad_input(run_airlight("random --seeds 3"), "--seeds", "3", "no colon");
+}
+
+TEST(RandomCommand, TheReferenceIsNotJudged) {
+  const Outcome o = run_airlight("random --methods raymarch,reference");
+  expect_bad_input(o, "--methods", "reference", "the reference among the judged");
+  EXPECT_NE(o.err.find("the reference is what methods are judged against"), std::string::npos) << o.err;
+}
+
+// A failure's reproduction: the scene file judged by one method, its rows on stdout.
+TEST(RandomCommand, ASceneFileIsJudgedAtTheDefaultsAndInEveryTrial) {
+  const Outcome o = run_airlight("random --builtin biri_sphere --methods analytic --size 16x12");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("seed,structure,cases,method,trial,measure,value,bound,verdict,seconds,detail\n", 0), 0u);
+  EXPECT_NE(o.out.find("biri_sphere,0,,analytic,defaults,rel_rmse,"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("biri_sphere,0,,analytic,exact,worst_pixel,"), std::string::npos) << o.out;
+}
+
+// Rows are appended a seed at a time; a rerun skips the seeds the file holds,
+// and a line a killed run left unfinished is dropped and its seed run again.
+TEST(RandomCommand, ARerunResumesFromTheResultsFile) {
+  const fs::path results = work_dir() / "resume.csv";
+  const std::string args = "random --seeds 0:2 --methods analytic --size 16x12 --results " + results.string();
+  const Outcome first = run_airlight(args);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const std::string rows = read_text(results);
+  ASSERT_FALSE(rows.empty());
+
+  const Outcome second = run_airlight(args);
+  ASSERT_EQ(second.status, 0) << second.err;
+  EXPECT_NE(second.err.find("2 already in " + results.string()), std::string::npos) << second.err;
+  EXPECT_EQ(read_text(results), rows);
+
+  std::ofstream(results, std::ios::app) << "2,0,,analytic,defa";  // a killed run's last line
+  const Outcome third = run_airlight("random --seeds 0:3 --methods analytic --size 16x12 --results " + results.string());
+  ASSERT_EQ(third.status, 0) << third.err;
+  EXPECT_NE(third.err.find("2 already in"), std::string::npos) << third.err;
+  const std::string after = read_text(results);
+  EXPECT_EQ(after.rfind(rows, 0), 0u);
+  EXPECT_EQ(after.find("defa\n"), std::string::npos);
+  EXPECT_NE(after.find("\n2,"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace airlight

@@ -1,0 +1,91 @@
+// The harness's measures on images made by hand: each bound is met or missed
+// where the arithmetic says, and a bad value fails before any measure.
+#include "harness/judge.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace airlight::harness {
+namespace {
+
+Image flat(float value) { return Image(4, 3, glm::vec3(value)); }
+
+TEST(Judge, RelRmseIsTheRootMeanSquareOverTheMean) {
+  Image method = flat(1.0f);
+  method.at(0, 0) = glm::vec3(1.0f + std::sqrt(12.0f));  // one pixel of 12 off by √12: RMSE 1
+  EXPECT_NEAR(rel_rmse(method, flat(1.0f)), 1.0, 1e-6);
+  EXPECT_NEAR(rel_rmse(flat(1.0f), flat(2.0f)), 0.5, 1e-6);  // RMSE 1 over a mean of 2
+}
+
+TEST(Judge, RelRmseOfABlackReferenceDividesByTheFloor) {
+  EXPECT_NEAR(rel_rmse(flat(1e-7f), flat(0.0f)), 1e-7 / absolute_floor, 1e-6);
+}
+
+TEST(Judge, WorstPixelSkipsPixelsBelowOnePercentOfTheMaximum) {
+  Image reference = flat(1.0f), method = flat(1.0f);
+  reference.at(1, 1) = glm::vec3(0.009f);  // below 1 % of the maximum: not judged however wrong
+  method.at(1, 1) = glm::vec3(5.0f);
+  reference.at(2, 1) = glm::vec3(0.011f);  // above it: judged by its own value
+  method.at(2, 1) = glm::vec3(0.011f * 1.5f);
+  const WorstPixel w = worst_pixel(method, reference);
+  EXPECT_EQ(w.x, 2);
+  EXPECT_EQ(w.y, 1);
+  EXPECT_NEAR(w.error, 0.5, 1e-5);
+}
+
+TEST(Judge, WorstPixelTakesTheLargestChannelErrorOverTheLargestChannel) {
+  Image reference(1, 1, glm::vec3(1.0f, 0.1f, 0.1f)), method(1, 1, glm::vec3(1.0f, 0.1f, 0.13f));
+  EXPECT_NEAR(worst_pixel(method, reference).error, 0.03, 1e-6);  // 0.03 of the red, not 30 % of the blue
+}
+
+TEST(Judge, BadValuesAreNamedWithTheirPixel) {
+  Image image = flat(1.0f);
+  EXPECT_EQ(bad_value(image), "");
+  image.at(3, 2).g = -0.5f;
+  EXPECT_EQ(bad_value(image), "pixel (3, 2) is negative (-0.5)");
+  image.at(1, 0).b = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(bad_value(image), "pixel (1, 0) is NaN");
+  image.at(0, 0).r = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(bad_value(image), "pixel (0, 0) is infinite");
+}
+
+TEST(Judge, DefaultsWithinTenPercent) {
+  EXPECT_TRUE(judge_defaults(flat(1.09f), flat(1.0f)).pass);
+  const Verdict v = judge_defaults(flat(1.11f), flat(1.0f));
+  EXPECT_FALSE(v.pass);
+  EXPECT_EQ(v.measure, "rel_rmse");
+  EXPECT_EQ(v.detail, "rRMSE 0.11 > 0.1");
+}
+
+TEST(Judge, WithoutLightsOnlyZeroPasses) {
+  EXPECT_TRUE(judge_defaults(flat(0.0f), flat(0.0f)).pass);
+  const Verdict v = judge_defaults(flat(1e-9f), flat(0.0f));
+  EXPECT_FALSE(v.pass);
+  EXPECT_EQ(v.detail, "airlight 1e-09 where the reference has none");
+}
+
+TEST(Judge, ANanFailsBeforeAnyMeasure) {
+  Image method = flat(1.0f);
+  method.at(0, 0).r = std::numeric_limits<float>::quiet_NaN();
+  const Trial trial{"exact", {}, Trial::Measure::worst_pixel, 0.02, "test"};
+  const Verdict v = judge_trial(trial, method, flat(1.0f));
+  EXPECT_FALSE(v.pass);
+  EXPECT_EQ(v.measure, "finite");
+  EXPECT_EQ(v.trial, "exact");
+}
+
+TEST(Judge, TrialsUseTheirMeasureAndBound) {
+  const Trial worst{"exact", {}, Trial::Measure::worst_pixel, 0.02, "test"};
+  Image method = flat(1.0f);
+  method.at(2, 2) = glm::vec3(1.03f);
+  const Verdict v = judge_trial(worst, method, flat(1.0f));
+  EXPECT_FALSE(v.pass);
+  EXPECT_EQ(v.detail, "pixel (2, 2): 1.03 against 1, error 0.03 > 0.02");
+  const Trial rmse{"high quality", {}, Trial::Measure::rel_rmse, 0.03, "test"};
+  EXPECT_TRUE(judge_trial(rmse, method, flat(1.0f)).pass);  // 0.03/√12 overall
+}
+
+}  // namespace
+}  // namespace airlight::harness
