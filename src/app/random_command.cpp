@@ -14,6 +14,7 @@
 #include <airlight/error.hpp>
 
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
 #include <fstream>
@@ -154,8 +155,8 @@ private:
                  j.verdict.measure.c_str(), j.verdict.detail.empty() ? "" : (": " + j.verdict.detail).c_str());
     const Scene kept = o_.no_shrink ? scene : harness_.shrink(scene, method, j.verdict.trial);
     std::string stem = label + "_" + j.method + "_" + j.verdict.trial;
-    for (char& c : stem)
-      if (c == ' ' || c == '/') c = '_';
+    for (char& c : stem)  // a name the reproduction's command line takes as it is
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
     const fs::path file = fs::path(o_.failures) / (stem + ".json");
     fs::create_directories(file.parent_path());
     save_scene(kept, file);
