@@ -32,6 +32,8 @@ set(ALLOW_methods/*   methods/kit gpu reference scene geometry optics core scene
 # The command and the shared library reach methods only through the registry.
 set(ALLOW_app         methods/kit gpu reference scene geometry optics core scene-model)
 set(ALLOW_lib         methods/kit gpu reference scene geometry optics core scene-model)
+# The differential harness judges methods, through the registry as app does.
+set(ALLOW_harness     methods/kit gpu reference scene geometry optics core scene-model)
 # The viewer is a subcommand on app's helpers (scene source, settings); app never includes it.
 set(ALLOW_view        app methods/kit gpu reference scene geometry optics core scene-model)
 
@@ -44,7 +46,7 @@ set(PUBLIC_HEADER_OWNER_scene    scene-model)
 set(PUBLIC_HEADER_OWNER_method   methods/kit)  # the method contract, implemented by the kit
 set(PUBLIC_HEADER_OWNER_engine   methods/kit)
 
-set(FOLDERS core optics geometry scene reference gpu methods app view lib)
+set(FOLDERS core optics geometry scene reference gpu methods harness app view lib)
 
 # folder of a path relative to src/ or shaders/ ("methods/raymarch/x.cpp" -> methods/raymarch)
 function(folder_of path out)
