@@ -6,6 +6,8 @@
 // floating-point ones call std::exp, std::log, std::sin and std::cos, which come
 // from the same libm whichever compiler built the caller, and x86-64's baseline
 // has no FMA for a compiler to contract into, so a seed also gives the same bits.
+// Callers draw one value per statement: the order in which a call's arguments
+// (or a + b's operands) are evaluated is unspecified, and GCC and Clang differ.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -48,7 +50,8 @@ public:
 
   // Uniform in [0, 1) with 53 random bits: every double that step can hold.
   double uniform() {
-    const std::uint64_t bits = (std::uint64_t{next()} << 32) | next();
+    const std::uint64_t high = next();
+    const std::uint64_t bits = (high << 32) | next();
     return static_cast<double>(bits >> 11) * 0x1p-53;
   }
   // Uniform in [lo, hi).
