@@ -3,16 +3,16 @@
 // 2014, pcg32_random_r of the reference C code) seeded through splitmix64, with
 // its own distributions. The std:: distributions are implementation-defined, so
 // the same seed would draw other scenes under GCC and Clang; these are not. The
-// floating-point ones call std::exp, std::log, std::sin and std::cos, which come
-// from the same libm whichever compiler built the caller, and x86-64's baseline
-// has no FMA for a compiler to contract into, so a seed also gives the same bits.
+// floating-point ones use +, −, ×, ÷ and sqrt, correctly rounded everywhere,
+// and std::exp and std::log, which come from the same libm whichever compiler
+// built the caller; x86-64's baseline has no FMA for a compiler to contract
+// into. So a seed gives the same bits under both. Not sin and cos of one angle:
+// GCC fuses them into one sincos call, whose last bit can differ from theirs.
 // Callers draw one value per statement: the order in which a call's arguments
 // (or a + b's operands) are evaluated is unspecified, and GCC and Clang differ.
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <glm/vec3.hpp>
-#include <numbers>
 #include <span>
 
 namespace airlight::harness {
@@ -68,11 +68,16 @@ public:
   }
   // Log-uniform in [lo, hi) (both > 0): every decade equally likely.
   double log_uniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
-  // Uniform over the unit sphere (Archimedes: z uniform in [−1, 1]).
+  // Uniform over the unit sphere: a point uniform in the unit ball, by rejection
+  // from the cube (π/6 of draws kept), scaled to length 1.
   glm::dvec3 unit_vector() {
-    const double z = uniform(-1.0, 1.0), phi = uniform(0.0, 2.0 * std::numbers::pi);
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    for (;;) {
+      const double x = uniform(-1.0, 1.0);
+      const double y = uniform(-1.0, 1.0);
+      const double z = uniform(-1.0, 1.0);
+      const double r2 = x * x + y * y + z * z;
+      if (r2 > 1e-12 && r2 <= 1.0) return glm::dvec3(x, y, z) / std::sqrt(r2);
+    }
   }
   bool bernoulli(double p) { return uniform() < p; }
   template <class T>

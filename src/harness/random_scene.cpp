@@ -288,9 +288,10 @@ Light draw_light(Draft& d, const LightShape& shape) {
       if (shape.gobo) light.gobo = gobo(r);
     }
   } else {
-    light.position = glm::vec3(point_in(r, d.box, 0.02));
+    const dvec3 position = point_in(r, d.box, 0.02);
+    light.position = glm::vec3(position);
     if (shape.type == LightType::spot) {
-      dvec3 axis = point_in(r, d.box, 0.0) - dvec3(light.position);
+      dvec3 axis = point_in(r, d.box, 0.0) - position;
       if (!(glm::length(axis) > 1e-3 * d.size)) axis = dvec3(0, -1, 0);
       light.direction = glm::vec3(glm::normalize(axis));
       light.cone_deg = float(shape.wide ? r.uniform(60.0, shape.gobo ? 89.0 : 179.0) : r.uniform(5.0, 59.0));
@@ -665,9 +666,10 @@ void force_eye_in_cone(Draft& d) {
     optics::gobo_frame(light, right, up);
     const dvec3 axis(light.direction);
     if (light.type == LightType::spot) {
-      const double angle = optics::radians(light.cone_deg) * d.r.uniform(0.0, 0.8);
-      const double turn = d.r.uniform(0.0, 2.0 * std::numbers::pi);
-      const dvec3 dir = std::cos(angle) * axis + std::sin(angle) * (std::cos(turn) * right + std::sin(turn) * up);
+      // Off the axis by up to 0.8 of the cone, toward a random side (tan alone: see random.hpp on sin and cos).
+      const double off = std::tan(optics::radians(std::min(double(light.cone_deg), 89.0)) * d.r.uniform(0.0, 0.8));
+      const dvec3 side = glm::normalize(glm::cross(axis, d.r.unit_vector()));
+      const dvec3 dir = glm::normalize(axis + off * side);
       return dvec3(light.position) + dir * (d.size * d.r.uniform(0.1, 0.8));
     }
     const Beam& beam = *light.beam;

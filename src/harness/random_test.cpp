@@ -2,6 +2,7 @@
 // the distributions' ranges and rough uniformity.
 #include "harness/random.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
