@@ -18,7 +18,6 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <map>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -408,36 +407,68 @@ bool eye_in_volume(const Scene& scene) {
   return false;
 }
 
-// A silhouette edge of a mesh from a light: welded by exact position, an edge
-// with one triangle (an open mesh's border) or with one triangle facing the
-// light and one not.
+// A mesh's edges welded by exact position, each with the triangles that share
+// it (second = −1: an open mesh's border). Sorted vectors, not maps: every
+// scene's detection builds them for every caster.
+struct SharedEdge {
+  dvec3 a, b;
+  int first = 0, second = -1;
+};
+
+std::vector<SharedEdge> shared_edges(const Mesh& mesh) {
+  std::vector<uint32_t> order(mesh.positions.size());
+  for (uint32_t v = 0; v < order.size(); ++v) order[v] = v;
+  const auto key = [&](uint32_t v) {
+    const glm::vec3& p = mesh.positions[v];
+    return std::array<float, 3>{p.x + 0.0f, p.y + 0.0f, p.z + 0.0f};  // +0.0f: −0 and +0 are one position
+  };
+  std::ranges::sort(order, [&](uint32_t u, uint32_t v) { return key(u) < key(v); });
+  std::vector<uint32_t> id(order.size());
+  for (size_t k = 0, next = 0; k < order.size(); ++k) {
+    if (k > 0 && key(order[k]) != key(order[k - 1])) ++next;
+    id[order[k]] = static_cast<uint32_t>(next);
+  }
+  struct Side {
+    std::pair<uint32_t, uint32_t> welded;
+    int triangle;
+    uint32_t from, to;
+  };
+  std::vector<Side> sides;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t i = mesh.triangles[t][k], j = mesh.triangles[t][(k + 1) % 3];
+      sides.push_back({std::minmax(id[i], id[j]), static_cast<int>(t), i, j});
+    }
+  std::ranges::stable_sort(sides, [](const Side& x, const Side& y) { return x.welded < y.welded; });
+  std::vector<SharedEdge> edges;
+  for (size_t k = 0; k < sides.size();) {
+    size_t end = k + 1;
+    while (end < sides.size() && sides[end].welded == sides[k].welded) ++end;
+    if (end - k <= 2)  // more than two triangles on an edge: no silhouette to speak of
+      edges.push_back({dvec3(mesh.positions[sides[k].from]), dvec3(mesh.positions[sides[k].to]), sides[k].triangle,
+                       end - k == 2 ? sides[k + 1].triangle : -1});
+    k = end;
+  }
+  return edges;
+}
+
 struct Edge {
   dvec3 a, b;
 };
 
-std::vector<Edge> silhouette_edges(const Mesh& mesh, const Light& light) {
-  std::map<std::array<float, 3>, uint32_t> welded;
-  std::vector<uint32_t> id(mesh.positions.size());
-  for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    const glm::vec3& p = mesh.positions[v];
-    id[v] = welded.try_emplace({p.x + 0.0f, p.y + 0.0f, p.z + 0.0f}, static_cast<uint32_t>(welded.size())).first->second;
-  }
-  std::map<std::pair<uint32_t, uint32_t>, std::vector<bool>> faces;  // edge → whether each triangle faces the light
-  std::map<std::pair<uint32_t, uint32_t>, Edge> ends;
-  for (const glm::uvec3& t : mesh.triangles) {
-    const dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
+// The silhouette edges of a mesh from a light: an open mesh's border, and the
+// edges between a triangle facing the light and one that does not.
+std::vector<Edge> silhouette_edges(const Mesh& mesh, const std::vector<SharedEdge>& shared, const Light& light) {
+  std::vector<bool> facing(mesh.triangles.size());
+  for (size_t t = 0; t < facing.size(); ++t) {
+    const glm::uvec3& i = mesh.triangles[t];
+    const dvec3 a(mesh.positions[i.x]), b(mesh.positions[i.y]), c(mesh.positions[i.z]);
     const dvec3 to_light = positional(light) ? dvec3(light.position) - a : -dvec3(light.direction);
-    const bool facing = glm::dot(glm::cross(b - a, c - a), to_light) > 0.0;
-    for (int k = 0; k < 3; ++k) {
-      const uint32_t i = t[k], j = t[(k + 1) % 3];
-      const auto key = std::minmax(id[i], id[j]);
-      faces[key].push_back(facing);
-      ends.try_emplace(key, Edge{dvec3(mesh.positions[i]), dvec3(mesh.positions[j])});
-    }
+    facing[t] = glm::dot(glm::cross(b - a, c - a), to_light) > 0.0;
   }
   std::vector<Edge> edges;
-  for (const auto& [key, facing] : faces)
-    if (facing.size() == 1 || (facing.size() == 2 && facing[0] != facing[1])) edges.push_back(ends.at(key));
+  for (const SharedEdge& e : shared)
+    if (e.second < 0 || facing[size_t(e.first)] != facing[size_t(e.second)]) edges.push_back({e.a, e.b});
   return edges;
 }
 
@@ -469,11 +500,13 @@ bool on_shadow_side(const Light& light, const Edge& e, const dvec3& eye) {
 
 bool eye_on_shadow_plane(const Scene& scene) {
   const dvec3 eye(scene.camera.position);
-  for (const Light& light : scene.lights)
-    for (const Mesh& mesh : scene.meshes)
-      if (is_shadow_caster(mesh))
-        for (const Edge& e : silhouette_edges(mesh, light))
-          if (on_shadow_side(light, e, eye)) return true;
+  for (const Mesh& mesh : scene.meshes) {
+    if (!is_shadow_caster(mesh) || scene.lights.empty()) continue;
+    const std::vector<SharedEdge> shared = shared_edges(mesh);
+    for (const Light& light : scene.lights)
+      for (const Edge& e : silhouette_edges(mesh, shared, light))
+        if (on_shadow_side(light, e, eye)) return true;
+  }
   return false;
 }
 
@@ -689,7 +722,8 @@ void force_eye_in_volume(Draft& d) {
 void force_eye_on_shadow_plane(Draft& d) {
   move_eye(d, [&] {
     const Light& light = any_light(d);
-    const std::vector<Edge> edges = silhouette_edges(any_shadow_caster(d), light);
+    const Mesh& caster = any_shadow_caster(d);
+    const std::vector<Edge> edges = silhouette_edges(caster, shared_edges(caster), light);
     if (edges.empty()) return dvec3(INFINITY);  // a light inside a closed caster may see none: no eye
     const Edge& e = d.r.pick(std::span<const Edge>(edges));
     const double share = d.r.uniform(0.1, 0.9);
