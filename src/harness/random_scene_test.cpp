@@ -83,9 +83,10 @@ TEST(RandomScene, ASeedDrawsTheSameSceneEveryTime) {
 }
 
 // The fingerprints of a few seeds, as GCC 12 and Clang 14 on x86-64 both draw
-// them: another compiler, library or change to the generator that draws other
-// scenes shows here (a deliberate change to the generator updates them). The
-// meshes come from the scene layer's shapes, whatever compiler built those.
+// them (seeds 0–999 came out bit for bit the same with the generator and the
+// shapes, optics, geometry and solids it calls built by either): another
+// compiler, library or change to the generator that draws other scenes shows
+// here (a deliberate change to the generator updates them).
 TEST(RandomScene, SeedsDrawTheScenesTheyAlwaysDrew) {
   const std::map<int, std::uint64_t> expected{{0, 0x20366f82ba59ea61ull}, {1, 0x189845991ee4a034ull},
                                               {42, 0x96bc0c8b30f11ed4ull}, {500, 0xa2f516ae0dec7e9bull}};
@@ -149,10 +150,6 @@ TEST(RandomScene, EverySpecialCaseIsDrawnOften) {
     std::printf("%-24s %5.1f %%\n", std::string(case_name(SpecialCase(c))).c_str(), 100.0 * share);
     EXPECT_GE(share, 0.05) << case_name(SpecialCase(c));
   }
-}
-
-TEST(RandomScene, TheCasesListedAreTheOnesTheSceneHas) {
-  for (int seed = 0; seed < kSeeds; seed += 97) EXPECT_EQ(scenes()[size_t(seed)].cases, special_cases(scenes()[size_t(seed)].scene));
 }
 
 TEST(RandomScene, EveryFeatureOfTheFormatIsDrawn) {
