@@ -15,6 +15,10 @@ namespace airlight {
 
 using Color = glm::vec3;
 
+// The largest far/near airlight supports: a scene file, a glTF camera or a
+// frame beyond it is refused (docs/design.md §4).
+inline constexpr double max_far_over_near = 1e5;
+
 struct Camera {
   glm::vec3 position{0, 2, 8}, look_at{0, 1, 0}, up{0, 1, 0};
   float fov_y_deg = 45.0f;  // full vertical field of view

@@ -5,6 +5,7 @@
 #include "scene/gltf_scene.hpp"
 
 #include "core/warning.hpp"
+#include "scene/camera_limits.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/light_defaults.hpp"
 #include "scene/mesh_build.hpp"
@@ -323,6 +324,8 @@ private:
     camera.near = float(p.znear);
     if (p.zfar > 0.0) camera.far = float(p.zfar);  // 0: infinite in tinygltf; airlight's default then
     if (!(camera.far > camera.near)) fail(key + ".perspective.zfar", "must be greater than znear");
+    if (const std::string problem = scene_camera::depth_range_problem(camera); !problem.empty())
+      fail(key + ".perspective.zfar", problem);
     out_.camera = camera;
     camera_ = true;
   }
@@ -342,6 +345,9 @@ private:
     camera.look_at = centre;
     camera.position = centre + distance * glm::normalize(glm::vec3(0, 0.5f, 1));
     camera.far = std::max(camera.far, distance + 2.0f * radius);
+    // Far enough for a large model would leave the default near past the depth range airlight
+    // supports; a hair inside the limit, since far/limit rounds to float.
+    camera.near = std::max(camera.near, camera.far / float(0.999 * max_far_over_near));
     return camera;
   }
 

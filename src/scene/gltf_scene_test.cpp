@@ -330,6 +330,17 @@ TEST(GltfScene, WithoutFogOrCameraTheMediumIsEmptyAndTheCameraFramesTheMeshes) {
   expect_vec(glm::normalize(s.camera.position - centre), glm::normalize(glm::vec3(0, 0.5f, 1)), 1e-6f);
 }
 
+// A model 100 km across: the framing camera's far reaches past it, and its near
+// rises from the default so that far/near stays within what airlight supports.
+TEST(GltfScene, TheFramingCameraOfAHugeModelKeepsFarOverNearInRange) {
+  Gltf g;
+  g.node({{"mesh", g.mesh(triangle, {0, 1, 2})}, {"scale", {1e5, 1e5, 1e5}}});
+  const Camera c = load_scene(g.write("huge")).camera;
+  EXPECT_GT(c.far, 1e5f);
+  EXPECT_LE(double(c.far) / double(c.near), max_far_over_near);
+  EXPECT_GT(double(c.far) / double(c.near), 0.99 * max_far_over_near);  // no nearer than it must be
+}
+
 // The file loads as one mesh of `triangles` triangles, warning `warning` once.
 void expect_one_mesh_and_warning(const fs::path& file, size_t triangles, const std::string& warning) {
   const CapturedWarnings warnings;
@@ -556,6 +567,14 @@ INSTANTIATE_TEST_SUITE_P(
                     g.node({{"camera", 0}});
                   },
                   "cameras[0]", "is orthographic: airlight renders perspective cameras only"},
+        Malformed{"depth_range",
+                  [](Gltf& g) {
+                    g.json["cameras"] = {{{"type", "perspective"},
+                                          {"perspective", {{"yfov", 0.5}, {"znear", 0.001}, {"zfar", 1000}}}}};
+                    g.node({{"camera", 0}});
+                  },
+                  "cameras[0].perspective.zfar",
+                  "far/near = 1e+06 is above the 100000 airlight supports (depth precision)"},
         // The message is the scene file reader's (scene_json_test holds its wording); the key
         // shows that reader ran inside extras.airlight.
         Malformed{"fog_key",

@@ -1,6 +1,7 @@
 // The airlight-scene/1 format (docs/design.md §4): one reader per section, each
 // checking its values' types and ranges and rejecting keys it does not know.
 #include "core/image_io.hpp"
+#include "scene/camera_limits.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/light_defaults.hpp"
@@ -102,6 +103,7 @@ Camera read_camera(const JsonNode& node) {
   o.finish();
   if (!(c.far > c.near))
     o.fail("far", "must be greater than near (" + number_text(c.near) + "), got " + number_text(c.far));
+  if (const std::string problem = scene_camera::depth_range_problem(c); !problem.empty()) o.fail("far", problem);
   const glm::dvec3 view = glm::dvec3(c.look_at) - glm::dvec3(c.position);
   if (!(glm::length(view) > 0.0)) o.fail("look_at", "must differ from position");
   if (parallel(view, glm::dvec3(c.up))) o.fail("up", "must not be parallel to the view direction");

@@ -362,6 +362,8 @@ const BadCase kOutOfRange[] = {
     {"NearNegative", "/camera/near", "-0.1", "camera.near"},
     {"FarBelowNear", "/camera/far", "0.05", "camera.far", "must be greater than near (0.1), got 0.05"},
     {"FarEqualsNear", "/camera/far", "0.1", "camera.far"},
+    {"FarOverNear", "/camera/far", "2e5", "camera.far",
+     "far/near = 2e+06 is above the 100000 airlight supports (depth precision)"},
     {"NegativeScattering", "/medium/scattering", "-0.1", "medium.scattering", "must be >= 0, got -0.1"},
     {"NegativeScatteringChannel", "/medium/scattering/1", "-0.01", "medium.scattering[1]"},
     {"NegativeAbsorption", "/medium/absorption", "-0.01", "medium.absorption"},

@@ -30,10 +30,10 @@ set(ALLOW_methods/kit gpu reference scene geometry optics core scene-model)
 # methods/<name>: the kit and everything below it, never another methods/<other>.
 set(ALLOW_methods/*   methods/kit gpu reference scene geometry optics core scene-model)
 # The command and the shared library reach methods only through the registry.
-# The random scenes' harness draws scenes and judges methods through the registry.
-set(ALLOW_harness     methods/kit reference scene geometry optics core scene-model)
 set(ALLOW_app         harness methods/kit gpu reference scene geometry optics core scene-model)
 set(ALLOW_lib         methods/kit gpu reference scene geometry optics core scene-model)
+# The differential harness judges methods, through the registry as app does.
+set(ALLOW_harness     methods/kit gpu reference scene geometry optics core scene-model)
 # The viewer is a subcommand on app's helpers (scene source, settings); app never includes it.
 set(ALLOW_view        app harness methods/kit gpu reference scene geometry optics core scene-model)
 

@@ -5,6 +5,7 @@
 
 #include "core/number_text.hpp"
 #include "gpu/context.hpp"
+#include "scene/camera_limits.hpp"
 #include "scene/light_defaults.hpp"
 
 #include <algorithm>
@@ -92,6 +93,13 @@ void check_frame_inputs(const Scene& scene, const FrameInputs& in) {
               "transforms[" + std::to_string(m) + "]", "must be finite");
   require(finite(in.camera.position) && finite(in.camera.look_at) && finite(in.camera.up), "camera",
           "position, look_at and up must be finite");
+  require(in.camera.near > 0.0f && std::isfinite(in.camera.near), "camera.near",
+          "must be finite and > 0, got " + number_text(in.camera.near));
+  require(in.camera.far > in.camera.near && std::isfinite(in.camera.far), "camera.far",
+          "must be finite and greater than near (" + number_text(in.camera.near) + "), got " +
+              number_text(in.camera.far));
+  const std::string depth_range = scene_camera::depth_range_problem(in.camera);
+  require(depth_range.empty(), "camera.far", depth_range);
   for (size_t i = 0; i < in.lights.size(); ++i) check_light(in.lights[i], index("lights", i));
   const Medium& m = in.medium;
   require(finite(m.sigma_s) && finite(m.sigma_a) && glm::all(glm::greaterThanEqual(m.sigma_s, glm::vec3(0.0f))) &&

@@ -79,6 +79,15 @@ const BadFrame cases[] = {
        in.lights[0].beam->length = nan;
      },
      "frame: lights[0].beam.length: must be finite and > 0, got nan"},
+    {"Near", [](FrameInputs& in) { in.camera.near = 0.0f; }, "frame: camera.near: must be finite and > 0, got 0"},
+    {"FarBelowNear", [](FrameInputs& in) { in.camera.far = 0.01f; },
+     "frame: camera.far: must be finite and greater than near (0.05), got 0.01"},
+    {"DepthRange",
+     [](FrameInputs& in) {
+       in.camera.near = 1e-4f;
+       in.camera.far = 200.0f;
+     },
+     "frame: camera.far: far/near = 2e+06 is above the 100000 airlight supports (depth precision)"},
     {"Cone", [](FrameInputs& in) { in.lights[0].cone_deg = 200.0f; },
      "frame: lights[0].cone_deg: must be in (0, 180], got 200.000000"},
 };
@@ -101,12 +110,14 @@ TEST_P(Contract, RefusesTheFrameNamingTheKey) {
 INSTANTIATE_TEST_SUITE_P(Inputs, Contract, ::testing::ValuesIn(cases),
                          [](const auto& info) { return std::string(info.param.name); });
 
-// A phase lobe's g, a gobo_up and a beam at their valid extremes pass.
+// A phase lobe's g, a gobo_up, a beam and far/near at their valid extremes pass.
 TEST(Contract, AcceptsTheLoadersValidValues) {
   const Scene scene = builtin_scene("teapot_spot");
   FrameInputs in = frame_inputs(scene, 128, 96);
   in.medium.phase.lobes = {{PhaseType::henyey_greenstein, 0.95f, 0.25f}, {PhaseType::isotropic, 0.0f, 0.75f}};
   in.light_model = {LightModelType::simplified, 0.0f, 0.0f};
+  in.camera.near = 0.5f;
+  in.camera.far = 50000.0f;  // far/near exactly max_far_over_near
   beam(in);
   EXPECT_NO_THROW(check_frame_inputs(scene, in));
   in.lights[0].beam.reset();
