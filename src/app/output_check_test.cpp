@@ -87,10 +87,10 @@ TEST(OutputCheck, SettingsBeyondTheMemoryExitTwoBeforeAnyOpenGl) {
   const std::string out = " --size 64x48 --out " + (work_dir() / "big.png").string();
   const auto memory = [](int mib) { return no_gl() + " AIRLIGHT_MEMORY_MIB=" + std::to_string(mib); };
   const std::string meshes =
-      "the light volume meshes of 1 cube map (6 faces × 2·1024² triangles), 1 spot map (2·1024² triangles and the "
-      "sides) and 1 directional map (2·1024² triangles and the sides), 80 bytes a triangle";
+      "the light volume meshes of 1 cube map (6 faces × 6·1024² triangles), 1 spot map (6·1024² triangles and the "
+      "sides) and 1 directional map (6·1024² triangles and the sides), 80 bytes a triangle";
   expect_refused("render --builtin three_lights --method light_volume --set volume_resolution=1024" + out,
-                 "--set: volume_resolution=1024: light_volume needs about 1.4 GiB of memory, 1.3 GiB of it for " +
+                 "--set: volume_resolution=1024: light_volume needs about 4.0 GiB of memory, 3.9 GiB of it for " +
                      meshes + ", more than the 1.0 GiB available",
                  memory(1024));
   expect_refused("render --builtin three_lights --method sv_march --set volume_resolution=512" + out,
@@ -120,15 +120,15 @@ TEST(OutputCheck, SettingsBeyondTheMemoryExitTwoBeforeAnyOpenGl) {
                  "the 64 MiB available",
                  memory(64));
   // compare, bench and view check the same, compare and bench with the method's name in front.
-  const std::string qualified = "--set: light_volume.volume_resolution=1024: light_volume needs about 1.4 GiB of "
-                                "memory, 1.3 GiB of it for " + meshes + ", more than the 1.0 GiB available";
+  const std::string qualified = "--set: light_volume.volume_resolution=1024: light_volume needs about 4.0 GiB of "
+                                "memory, 3.9 GiB of it for " + meshes + ", more than the 1.0 GiB available";
   expect_refused("compare --builtin three_lights --methods raymarch,light_volume:volume_resolution=1024" + out,
                  qualified, memory(1024));
   expect_refused("bench --builtin three_lights --methods light_volume --sweep light_volume.volume_resolution=64,1024 "
                  "--sizes 64x48 --csv " + (work_dir() / "big.csv").string(),
                  qualified, memory(1024));
   expect_refused("view --builtin three_lights --method light_volume --set volume_resolution=1024 --size 64x48",
-                 "--set: volume_resolution=1024: light_volume needs about 1.4 GiB of memory, 1.3 GiB of it for " +
+                 "--set: volume_resolution=1024: light_volume needs about 4.0 GiB of memory, 3.9 GiB of it for " +
                      meshes + ", more than the 1.0 GiB available",
                  memory(1024));
   EXPECT_FALSE(fs::exists(work_dir() / "big.png"));
@@ -142,9 +142,9 @@ TEST(OutputCheck, ObjectsBeyondOneOpenGlObjectExitTwoBeforeAnyOpenGl) {
   const std::string plenty = no_gl() + " AIRLIGHT_MEMORY_MIB=1000000";
   expect_refused("render --builtin three_lights --method light_volume --set volume_resolution=2048 --set "
                  "shadow_resolution=2048 --size 64x48" + out,
-                 "--set: volume_resolution=2048: light_volume needs 5.0 GiB in one OpenGL buffer for the light volume "
-                 "meshes of 1 cube map (6 faces × 2·2048² triangles), 1 spot map (2·2048² triangles and the sides) "
-                 "and 1 directional map (2·2048² triangles and the sides), 80 bytes a triangle, more than the 4.0 GiB "
+                 "--set: volume_resolution=2048: light_volume needs 15.0 GiB in one OpenGL buffer for the light volume "
+                 "meshes of 1 cube map (6 faces × 6·2048² triangles), 1 spot map (6·2048² triangles and the sides) "
+                 "and 1 directional map (6·2048² triangles and the sides), 80 bytes a triangle, more than the 4.0 GiB "
                  "one buffer holds on Mesa",
                  plenty);
   // Two point lights' cubes share one texture array: 12 faces of 7000² floats.
@@ -180,12 +180,12 @@ TEST(OutputCheck, AnOutOfMemoryThatStillHappensNamesTheSetting) {
     return Outcome{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, "", read_text(work_dir() / "oom.txt")};
   };
   if (run("list scenes").status != 0) GTEST_SKIP() << "this build cannot start in 1.1 GB of address space";
-  // 2·2048² triangles of 80 bytes: a 705 MiB buffer.
+  // 6·2048² triangles of 80 bytes: a 1.9 GiB buffer.
   const Outcome o = run("render --builtin teapot_spot --method light_volume --set volume_resolution=2048 --set "
                         "shadow_resolution=2048 --size 32x24 --out " + (work_dir() / "oom.pfm").string());
   EXPECT_EQ(o.status, 1) << o.err;
   EXPECT_EQ(o.err.rfind("airlight: failure: out of memory (GL_OUT_OF_MEMORY) in render:", 0), 0u) << o.err;
-  EXPECT_NE(o.err.find("705 MiB of it for the light volume meshes of 1 spot map (2·2048² triangles and the sides), 80 "
+  EXPECT_NE(o.err.find("2.0 GiB of it for the light volume meshes of 1 spot map (6·2048² triangles and the sides), 80 "
                        "bytes a triangle: the setting most likely responsible is volume_resolution=2048"),
             std::string::npos)
       << o.err;

@@ -2,21 +2,25 @@
 // §4.3.1, McCool 2000): one light's shadow map turned into a closed mesh
 // around its lit region, in passes over one light at a time:
 //   PASS_CELLS           each grid cell's [min, max] stored depth (shell only)
-//   PASS_GRID_VERTICES   the (R+1)² displaced grid vertices per map or cube face
+//   PASS_GRID_VERTICES   the (R+1)² grid vertices per map or cube face: texel, each corner's ray
+//                        (origin and step per unit depth); shell, the displaced vertices
 //   PASS_EXTRA_VERTICES  the apex (spot), or the far ring, skirt and cap corners (directional; texel only)
-//   PASS_GRID_TRIANGLES  two triangles per cell (shell: two per cell and surface)
-//   PASS_EXTRA_TRIANGLES the side walls (spot), or walls, skirt and cap (directional); shell: the
-//                        strips between the two surfaces' borders
+//   PASS_GRID_TRIANGLES  texel: six triangles per cell, its flat top and its walls to the next
+//                        column's and row's cells; shell: two per cell and surface
+//   PASS_EXTRA_TRIANGLES the side walls (spot, each cube face), or walls, skirt and cap
+//                        (directional); shell: the strips between the two surfaces' borders
 //   PASS_EYE             whether the frame's eye is inside: 0, else 1
-//   PASS_SEAMS           cubes: each face's border vertices copied from the face that owns them
+//   PASS_SEAMS           shell cubes: each face's border vertices copied from the face that owns them
 // Specialized by defines: VOLUME_KIND (the light's mesh), DEPTH_MODE (a
 // vertex's depth), PASS, CELL_SPLIT (a cell's texels reduced by several
 // invocations). No runtime branch on the light's kind.
 //
 // Vertices are computed once and read by every triangle that uses them (the
-// grid's in an image, the rest in a buffer), so corners shared by triangles
-// are the same bits; a cube's edge and corner vertices are computed by the
-// face that owns them and copied to the others' slots.
+// grid's in an image, the rest in a buffer), or (texel) computed from a
+// corner's ray and a stored depth by one `precise` expression, so corners
+// shared by triangles are the same bits; a shell cube's edge and corner
+// vertices are computed by the face that owns them and copied to the others'
+// slots, a texel cube's rays come from the lattice point, the same on every face.
 #include "methods/kit/frame_data.glsl"
 #include "optics/constants.glsl"
 
@@ -41,7 +45,8 @@ layout(binding = BINDING_SHADOW_MAPS) uniform sampler2DArray shadow_maps;
 layout(binding = BINDING_SHADOW_CUBES) uniform samplerCubeArray shadow_cubes;
 
 // Grid vertex (i, j) of cube face `face` (layer 0 for 2D maps): xyz; a
-// shell's outer surface in layers FACES to 2·FACES − 1.
+// shell's outer surface in layers FACES to 2·FACES − 1. Texel: the corner's
+// step per unit of depth in layer `face`, its ray's origin in face + FACES.
 layout(rgba32f, binding = 0) uniform image2DArray vertices;
 // A cell's [min, max] stored depth as order-preserving bits (order_bits).
 layout(r32ui, binding = 1) uniform uimage2DArray cell_low;
@@ -98,6 +103,18 @@ float clamp_depth(float stored) {
   return min(max(stored, cap_depth), far_depth);
 #else
   return min(max(stored, 0.0), far_depth);
+#endif
+}
+
+// The farthest depth a texel holding `stored` calls lit (scene.glsl's
+// shadow_visibility: x is lit while its distance r satisfies
+// r − b·(k·r + c)/S ≤ stored, the bias b in texels of size (k·r + c)/S).
+float lit_limit(float stored) {
+  float b = frame.shadow_bias / frame.shadow_resolution;
+#if VOLUME_KIND == KIND_DIRECTIONAL
+  return stored + b * LIGHT.texel_constant;
+#else
+  return (stored + b * LIGHT.texel_constant) / max(1.0 - b * LIGHT.texel_per_distance, 1e-6);
 #endif
 }
 
@@ -228,6 +245,39 @@ float orientation(int face) {
 // seams, the owner's copy).
 vec3 grid_vertex(int layer, ivec2 v) { return imageLoad(vertices, ivec3(v, layer)).xyz; }
 
+#if DEPTH_MODE == DEPTH_TEXEL
+// The depth of cell c of face `face`: as far as the shadow test calls points
+// lit (lit_limit, in float as it compares) through the texel under the cell's
+// centre (texel c when R = S).
+float cell_depth(int face, ivec2 c) {
+  return clamp_depth(lit_limit(stored_depth(face, min((2 * c + 1) * map_size / (2 * grid), ivec2(map_size - 1)))));
+}
+
+// Grid vertex v's ray at `depth`. `precise`: the cells and walls that share
+// the point compute it apart, and a fused multiply–add in one of them would
+// round it differently (the watertight test needs shared corners' bits equal).
+vec3 corner_at(int face, ivec2 v, float depth) {
+  precise vec3 point = imageLoad(vertices, ivec3(v, face + FACES)).xyz + depth * imageLoad(vertices, ivec3(v, face)).xyz;
+  return point;
+}
+#endif
+
+// Cell c's corners on vertex layer `layer` (texel: at the cell's depth, face `face`).
+void cell_corners(int face, int layer, ivec2 c, out vec3 v00, out vec3 v10, out vec3 v01, out vec3 v11) {
+#if DEPTH_MODE == DEPTH_TEXEL
+  float d = cell_depth(face, c);
+  v00 = corner_at(face, c, d);
+  v10 = corner_at(face, c + ivec2(1, 0), d);
+  v01 = corner_at(face, c + ivec2(0, 1), d);
+  v11 = corner_at(face, c + ivec2(1), d);
+#else
+  v00 = grid_vertex(layer, c);
+  v10 = grid_vertex(layer, c + ivec2(1, 0));
+  v01 = grid_vertex(layer, c + ivec2(0, 1));
+  v11 = grid_vertex(layer, c + ivec2(1));
+#endif
+}
+
 // Vertex s of the grid's border, counter-clockwise in (i, j): bottom, right, top, left.
 ivec2 border(int s) {
   int R = grid;
@@ -238,6 +288,9 @@ ivec2 border(int s) {
   if (side == 2) return ivec2(R - k, R);
   return ivec2(0, R - k);
 }
+
+// The cell inside border segment s (from border(s) to border(s + 1)).
+ivec2 border_cell(int s) { return min(min(border(s), border(s + 1)), ivec2(grid - 1)); }
 
 // This dispatch's item (a 2D dispatch of 64-wide groups, as long as it must be).
 uint local_item() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 64u; }
@@ -275,6 +328,21 @@ void write_oriented(uint index, float o, vec3 a, vec3 b, vec3 c) {
   if (o > 0.0) write_triangle(index, a, b, c);
   else write_triangle(index, a, c, b);
 }
+
+#if DEPTH_MODE == DEPTH_TEXEL
+// The wall between cell c (depth dc) and its neighbour n (dn) across their
+// edge a → b (c's border counter-clockwise in (i, j)): the quad b_c a_c a_n
+// b_n, c's pyramid side (b_c, a_c, light) plus n's (a_n, b_n, light) as the
+// border's sides close the grid (extra_triangles); on a cube's edge,
+// c and n lie on two faces, the corners' rays the same. Where the depths agree its
+// corners coincide: no area, no crossing.
+void wall(uint index, float o, int face, ivec2 a, ivec2 b, float dc, float dn) {
+  vec3 ac = corner_at(face, a, dc), bc = corner_at(face, b, dc);
+  vec3 an = corner_at(face, a, dn), bn = corner_at(face, b, dn);
+  write_oriented(index, o, bc, ac, an);
+  write_oriented(index + 1u, o, bc, an, bn);
+}
+#endif
 
 #if PASS == PASS_CELLS
 void cells(uint item) {
@@ -326,9 +394,7 @@ float cos_widest_cell() {
 }
 
 // An outer vertex's distance, from the farthest stored depth of its cells:
-// moved past where the shadow test stops calling points lit (scene.glsl's
-// shadow_visibility: x is lit while its distance r satisfies
-// r − b·(k·r + c)/S ≤ stored, the bias b in texels of size (k·r + c)/S), and,
+// moved past where the shadow test stops calling points lit (lit_limit), and,
 // for a light at a point, past the chords between a cell's corners: a point of
 // a triangle whose corners lie at distances ≥ D, at angles ≤ α apart as seen
 // from the light, is at distance ≥ D·cos α (its projection on one corner's
@@ -336,12 +402,10 @@ float cos_widest_cell() {
 // within distance D of the light lies within it (the ball is convex), and the
 // bias only moves the boundary out.
 float beyond_lit(float stored) {
-  float b = frame.shadow_bias / frame.shadow_resolution;
 #if VOLUME_KIND == KIND_DIRECTIONAL
-  return stored + b * LIGHT.texel_constant;
+  return lit_limit(stored);
 #else
-  float r = (stored + b * LIGHT.texel_constant) / max(1.0 - b * LIGHT.texel_per_distance, 1e-6);
-  return r / cos_widest_cell();
+  return lit_limit(stored) / cos_widest_cell();
 #endif
 }
 
@@ -361,12 +425,23 @@ void grid_vertices(uint item) {
   int face = int(item / uint(n * n)), rest = int(item % uint(n * n));
   ivec2 v = ivec2(rest % n, rest / n);
   ivec3 p = lattice(face, v);
-#if VOLUME_KIND == KIND_CUBE
+#if VOLUME_KIND == KIND_CUBE && DEPTH_MODE == DEPTH_SHELL
   if (owner(p) != face) return;  // another face computes this edge or corner vertex
 #endif
 #if DEPTH_MODE == DEPTH_TEXEL
-  float depth = clamp_depth(stored_depth(face, min(v * map_size / grid, ivec2(map_size - 1))));
-  imageStore(vertices, ivec3(v, face), vec4(grid_position(v, p, depth), 1.0));
+  // grid_position as origin + depth · step.
+  vec3 origin = LIGHT.position, step;
+#if VOLUME_KIND == KIND_CUBE
+  step = normalize(vec3(2 * p - grid) / float(grid));
+#elif VOLUME_KIND == KIND_SPOT
+  step = normalize(map_ray(grid_ndc(v)));
+#else
+  vec3 along = map_ray(grid_ndc(v));
+  step = along / dot(along, LIGHT.direction);
+  origin = map_point(grid_ndc(v), 0.0);
+#endif
+  imageStore(vertices, ivec3(v, face), vec4(step, 0.0));
+  imageStore(vertices, ivec3(v, face + FACES), vec4(origin, 1.0));
 #else
   float low = positive_infinity(), high = -positive_infinity();
 #if VOLUME_KIND == KIND_CUBE
@@ -405,12 +480,13 @@ void extra_vertices(uint item) {
 
 #if PASS == PASS_GRID_TRIANGLES
 // Cell c's two triangles on vertex layer `layer`, from record `index`.
-void cell_triangles(uint index, float o, int layer, ivec2 c) {
-  vec3 v00 = grid_vertex(layer, c), v10 = grid_vertex(layer, c + ivec2(1, 0));
-  vec3 v01 = grid_vertex(layer, c + ivec2(0, 1)), v11 = grid_vertex(layer, c + ivec2(1));
+void cell_triangles(uint index, float o, int face, int layer, ivec2 c) {
+  vec3 v00, v10, v01, v11;
+  cell_corners(face, layer, c, v00, v10, v01, v11);
   write_oriented(index, o, v00, v10, v11);
   write_oriented(index + 1u, o, v00, v11, v01);
 }
+
 
 void grid_triangles(uint item, uint local) {
   int R = grid;
@@ -418,10 +494,19 @@ void grid_triangles(uint item, uint local) {
   ivec2 c = ivec2(rest % R, rest / R);
   float o = orientation(face);
 #if DEPTH_MODE == DEPTH_SHELL
-  cell_triangles(4u * local, -o, face, c);  // the inner surface faces the light: out of the shell
-  cell_triangles(4u * local + 2u, o, face + FACES, c);
+  cell_triangles(4u * local, -o, face, face, c);  // the inner surface faces the light: out of the shell
+  cell_triangles(4u * local + 2u, o, face, face + FACES, c);
 #else
-  cell_triangles(2u * local, o, face, c);
+  // The shadow map's own steps: the texel's flat top, at its depth, over
+  // exactly the directions that read it, and the walls to the next column's
+  // and row's cells. The last column's and row's walls are the border's
+  // sides (extra_triangles): here they get the cell's own depth, no area.
+  cell_triangles(6u * local, o, face, face, c);
+  float d = cell_depth(face, c);
+  float right = c.x + 1 < R ? cell_depth(face, c + ivec2(1, 0)) : d;
+  float up = c.y + 1 < R ? cell_depth(face, c + ivec2(0, 1)) : d;
+  wall(6u * local + 2u, o, face, c + ivec2(1, 0), c + ivec2(1), d, right);
+  wall(6u * local + 4u, o, face, c + ivec2(1), c + ivec2(0, 1), d, up);
 #endif
 }
 #endif
@@ -441,26 +526,80 @@ void extra_triangles(uint item, uint local) {
   write_oriented(2u * local + 1u, o, u1, i0, i1);
 }
 #else
+#if VOLUME_KIND == KIND_CUBE
+// Border segment s of face `face` (from border(s) to border(s + 1)) lies on a
+// cube edge: the other face that holds both ends, and its cell there.
+void across_seam(int face, int s, out int other, out ivec2 cell) {
+  ivec3 p0 = lattice(face, border(s)), p1 = lattice(face, border(s + 1));
+  other = 0;
+  for (int g = 0; g < 6; ++g)
+    if (g != face && on_face(g, p0) && on_face(g, p1)) other = g;
+  cell = min(min(face_coords(other, p0), face_coords(other, p1)), ivec2(grid - 1));
+}
+#else
+// On border vertex s, the depth where the two border segments that meet there
+// (s − 1 and s) leave their cells' wall to a common side: the nearer cell's
+// depth for a spot (its sides run to the apex), the farther for a
+// directional map (to the far ring). One corner for both, so the border's
+// sides share their edges exactly: overlapping edges of different lengths,
+// met by every ray near a spot's apex, let the ray test hold a crossing twice
+// or not at all.
+float border_end(int s) {
+  float before = cell_depth(0, border_cell(s + 4 * grid - 1)), after = cell_depth(0, border_cell(s));
+#if VOLUME_KIND == KIND_SPOT
+  return min(before, after);
+#else
+  return max(before, after);
+#endif
+}
+
+// Part `part` (0, 1) of border segment s's side from the cell's depth d to
+// the common ends (border_end): (b1·d, b0·d, b0·e0) and (b1·d, b0·e0, b1·e1),
+// no area where an end is d. Returns the ends, b0·e0 and b1·e1, where the
+// side goes on to the apex or the far ring.
+void border_step(uint index, float o, int s, int part, out vec3 e0, out vec3 e1) {
+  float d = cell_depth(0, border_cell(s));
+  e0 = corner_at(0, border(s), border_end(s));
+  e1 = corner_at(0, border(s + 1), border_end(s + 1));
+  vec3 b0 = corner_at(0, border(s), d), b1 = corner_at(0, border(s + 1), d);
+  if (part == 0) write_oriented(index, o, b1, b0, e0);
+  else if (part == 1) write_oriented(index, o, b1, e0, e1);
+}
+#endif
+
 // The grid runs along its border from border(s) to border(s + 1) when o > 0:
 // what closes it runs back.
 void extra_triangles(uint item, uint local) {
   int R = grid, ring = 4 * R, k = int(item);
+#if VOLUME_KIND == KIND_CUBE
+  // Per face and border segment: the wall to the cell across the cube's edge,
+  // from the face of the lower index (the other's: no area).
+  int face = k / ring, s = k % ring, other;
+  ivec2 cell;
+  across_seam(face, s, other, cell);
+  float d = cell_depth(face, border_cell(s));
+  wall(2u * local, orientation(face), face, border(s), border(s + 1), d, face < other ? cell_depth(other, cell) : d);
+#elif VOLUME_KIND == KIND_SPOT
+  // Per border segment: its step to the common ends, and from them to the apex.
   float o = orientation(0);
-#if VOLUME_KIND == KIND_SPOT
-  vec3 apex = extras[0].xyz;
-  write_oriented(local, o, grid_vertex(0, border(k + 1)), grid_vertex(0, border(k)), apex);
+  vec3 e0, e1;
+  border_step(local, o, k / 3, k % 3, e0, e1);
+  if (k % 3 == 2) write_oriented(local, o, e1, e0, extras[0].xyz);
 #elif VOLUME_KIND == KIND_DIRECTIONAL
-  // [0, 8R): walls from the border B down to the far ring F; [8R, 12R + 4): the
-  // skirt at the far depth, per side a fan from its outer corner O; then the
-  // outer walls up to the cap corners Q (8), then the cap (2).
-  if (k < 2 * ring) {
-    int s = k / 2;
-    vec3 b0 = grid_vertex(0, border(s)), b1 = grid_vertex(0, border(s + 1));
+  float o = orientation(0);
+  // [0, 16R): per border segment its step to the common ends E, and walls down
+  // from them to the far ring F; [16R, 20R + 4): the skirt at the far depth,
+  // per side a fan from its outer corner O; then the outer walls up to the cap
+  // corners Q (8), then the cap (2).
+  if (k < 4 * ring) {
+    int s = k / 4;
+    vec3 e0, e1;
+    border_step(local, o, s, k % 4, e0, e1);
     vec3 f0 = extras[s].xyz, f1 = extras[(s + 1) % ring].xyz;
-    if (k % 2 == 0) write_oriented(local, o, b1, b0, f0);
-    else write_oriented(local, o, b1, f0, f1);
-  } else if (k < 2 * ring + 4 * (R + 1)) {
-    int side = (k - 2 * ring) / (R + 1), j = (k - 2 * ring) % (R + 1);
+    if (k % 4 == 2) write_oriented(local, o, e1, e0, f0);
+    else if (k % 4 == 3) write_oriented(local, o, e1, f0, f1);
+  } else if (k < 4 * ring + 4 * (R + 1)) {
+    int side = (k - 4 * ring) / (R + 1), j = (k - 4 * ring) % (R + 1);
     vec3 outer = extras[ring + side].xyz;
     if (j < R) {
       int s = side * R + j;
@@ -468,8 +607,8 @@ void extra_triangles(uint item, uint local) {
     } else {
       write_oriented(local, o, extras[((side + 1) * R) % ring].xyz, outer, extras[ring + (side + 1) % 4].xyz);
     }
-  } else if (k < 2 * ring + 4 * (R + 1) + 8) {
-    int side = (k - 2 * ring - 4 * (R + 1)) / 2;
+  } else if (k < 4 * ring + 4 * (R + 1) + 8) {
+    int side = (k - 4 * ring - 4 * (R + 1)) / 2;
     vec3 o0 = extras[ring + side].xyz, o1 = extras[ring + (side + 1) % 4].xyz;
     vec3 q0 = extras[ring + 4 + side].xyz, q1 = extras[ring + 4 + (side + 1) % 4].xyz;
     if (k % 2 == 0) write_oriented(local, o, o1, o0, q0);
@@ -490,8 +629,8 @@ void extra_triangles(uint item, uint local) {
 // cell, [0, 1]²) falls in: the same split of the cell as grid_triangles, the
 // plane of that triangle's corners.
 bool below_cell(int face, int layer, ivec2 c, vec2 f, vec3 x) {
-  vec3 v00 = grid_vertex(layer, c), v10 = grid_vertex(layer, c + ivec2(1, 0));
-  vec3 v01 = grid_vertex(layer, c + ivec2(0, 1)), v11 = grid_vertex(layer, c + ivec2(1));
+  vec3 v00, v10, v01, v11;
+  cell_corners(face, layer, c, v00, v10, v01, v11);
   vec3 a = v00, b = f.y <= f.x ? v10 : v11, d = f.y <= f.x ? v11 : v01;  // (v00, v10, v11) or (v00, v11, v01)
   return orientation(face) * dot(cross(b - a, d - a), x - a) < 0.0;
 }

@@ -60,9 +60,9 @@ int bound_texture_size(GLuint unit, GLenum binding_query) {
 GLsizei triangles_of(LightVolumeMesh::Kind kind, int r, LightVolumeMesh::Depth depth) {
   const bool shell = depth == LightVolumeMesh::Depth::shell;
   switch (kind) {
-    case LightVolumeMesh::Kind::spot: return shell ? 4 * r * r + 8 * r : 2 * r * r + 4 * r;
-    case LightVolumeMesh::Kind::cube: return shell ? 24 * r * r : 12 * r * r;
-    case LightVolumeMesh::Kind::directional: return shell ? 4 * r * r + 8 * r : 2 * r * r + 12 * r + 14;
+    case LightVolumeMesh::Kind::spot: return shell ? 4 * r * r + 8 * r : 6 * r * r + 12 * r;
+    case LightVolumeMesh::Kind::cube: return shell ? 24 * r * r : 36 * r * r + 48 * r;
+    case LightVolumeMesh::Kind::directional: return shell ? 4 * r * r + 8 * r : 6 * r * r + 20 * r + 14;
     case LightVolumeMesh::Kind::none: break;
   }
   return 0;
@@ -90,8 +90,8 @@ std::vector<SettingSpec> light_volume_settings(int default_resolution) {
   using T = SettingSpec::Type;
   return {{"volume_resolution", T::integer, static_cast<double>(default_resolution), 32, 4096, {},
            "cells per side of the grid each shadow map (or cube face) is turned into for the light volume mesh "
-           "(Kingston §4.3.1, McCool 2000), clamped to the map's resolution with a warning: 2R² triangles per map, 12R² per cube "
-           "(light_volume's mesh; sv_march's shell twice that)"}};
+           "(Kingston §4.3.1, McCool 2000), clamped to the map's resolution with a warning: about 6R² triangles per map, 36R² per cube "
+           "(light_volume's mesh; sv_march's shell 4R² and 24R²)"}};
 }
 
 LightVolumeMesh::LightVolumeMesh(int resolution, Depth depth) : resolution_(resolution), depth_(depth) {}
@@ -172,7 +172,7 @@ void LightVolumeMesh::build(const SceneFrame& frame) {
     range.count = triangles_of(range.kind, grid_, depth_);
     triangle_count_ += range.count;
   }
-  allocate(grid_, (cubes ? 6 : 1) * (depth_ == Depth::shell ? 2 : 1), triangle_count_, lights);
+  allocate(grid_, (cubes ? 6 : 1) * 2, triangle_count_, lights);  // shell: two surfaces; texel: steps and origins
   // Lights without a map: inside their (unbounded) lit volume, outside any shell.
   const GLint no_map = depth_ == Depth::shell ? 1 : 0;
   glClearNamedBufferData(eye_counts_.id(), GL_R32I, GL_RED_INTEGER, GL_INT, &no_map);
@@ -264,18 +264,22 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
     dispatch_items(use(cells_pass), 0, cells * static_cast<GLuint>(sub_blocks * sub_blocks));
   }
   dispatch_items(use(grid_vertices_pass), 0, static_cast<GLuint>(faces * (r + 1) * (r + 1)));
-  if (kind == Kind::cube) dispatch_items(use(seams_pass), 0, static_cast<GLuint>(6 * 4 * r));
+  const bool shell = depth_ == Depth::shell;
+  if (kind == Kind::cube && shell) dispatch_items(use(seams_pass), 0, static_cast<GLuint>(6 * 4 * r));
   const GLsizei first = ranges_[static_cast<size_t>(light)].first;
-  const GLuint surfaces = depth_ == Depth::shell ? 2 : 1;
-  write_records(use(grid_triangles_pass), first, cells, 2 * surfaces);
-  const GLsizei extras_first = first + 2 * static_cast<GLsizei>(surfaces * cells);
-  if (kind != Kind::cube && depth_ == Depth::shell) {  // the strips between the borders
-    write_records(use(extra_triangles_pass), extras_first, static_cast<GLuint>(4 * r), 2);
-  } else if (kind != Kind::cube) {
+  const GLuint per_cell = shell ? 4 : 6;  // shell: two per cell and surface; texel: the top and two walls
+  write_records(use(grid_triangles_pass), first, cells, per_cell);
+  const GLsizei extras_first = first + static_cast<GLsizei>(per_cell * cells);
+  if (shell) {
+    if (kind != Kind::cube)  // the strips between the borders
+      write_records(use(extra_triangles_pass), extras_first, static_cast<GLuint>(4 * r), 2);
+  } else if (kind == Kind::cube) {  // the walls across the cube's edges
+    write_records(use(extra_triangles_pass), extras_first, static_cast<GLuint>(6 * 4 * r), 2);
+  } else {
     const bool spot = kind == Kind::spot;
     dispatch_items(use(extra_vertices_pass), 0, spot ? 1u : static_cast<GLuint>(4 * r + 8));
     write_records(use(extra_triangles_pass), extras_first,
-                  spot ? static_cast<GLuint>(4 * r) : static_cast<GLuint>(12 * r + 14), 1);
+                  spot ? static_cast<GLuint>(12 * r) : static_cast<GLuint>(20 * r + 14), 1);
   }
   dispatch_items(use(eye_pass), 0, 1);
 }
@@ -305,10 +309,10 @@ double LightVolumeMesh::seconds() const {
 
 namespace {
 
-// "1 cube map (6 faces × 2·2048² triangles)": a kind's lights and their meshes.
+// "1 cube map (6 faces × 6·2048² triangles)": a kind's lights and their meshes.
 std::string meshes_text(LightVolumeMesh::Kind kind, int lights, int r, LightVolumeMesh::Depth depth) {
   using Kind = LightVolumeMesh::Kind;
-  const std::string per_sheet = std::string(depth == LightVolumeMesh::Depth::shell ? "4·" : "2·") + squared(r) + " triangles";
+  const std::string per_sheet = std::string(depth == LightVolumeMesh::Depth::shell ? "4·" : "6·") + squared(r) + " triangles";
   const std::string map = kind == Kind::cube ? "cube map" : kind == Kind::spot ? "spot map" : "directional map";
   return counted(lights, map) + " (" + (kind == Kind::cube ? "6 faces × " + per_sheet : per_sheet + " and the sides") +
          (lights > 1 ? " each)" : ")");
@@ -341,7 +345,7 @@ std::vector<MemoryNeed> light_volume_mesh_needs(const Scene& scene, const Settin
   }
   if (triangles == 0.0) return {};
   const bool shell = depth == LightVolumeMesh::Depth::shell;
-  const double layers = (lights[static_cast<int>(Kind::cube)] ? 6.0 : 1.0) * (shell ? 2.0 : 1.0);
+  const double layers = (lights[static_cast<int>(Kind::cube)] ? 6.0 : 1.0) * 2.0;  // as build() allocates
   const double grid = layers * ((r + 1.0) * (r + 1.0) * 16.0 + (shell ? 8.0 * r * r : 0.0));
   const double buffer = triangles * record_bytes;
   return {{"volume_resolution",

@@ -3,43 +3,57 @@
 // on the GPU, a closed triangle mesh around each light's lit region, made from
 // the light's shadow map as the frame drew it (airlight's own, or an engine's
 // converted into the same textures). McCool turns a shadow map into shadow
-// volumes by treating it as a terrain: its texels' depths displace a grid, so
-// the mesh costs O(R²) for an R² grid whatever the scene's geometry, and a
+// volumes by treating it as a terrain: its texels' depths make a surface over
+// a grid, so the mesh costs O(R²) for an R² grid whatever the scene's geometry, and a
 // compute shader rebuilds it every frame. Methods count a view ray's crossings
 // with it (LitIntervalPass) to find the stretches where the light arrives
 // instead of marching through the shadow map (Kingston §4.3.2).
 //
-// The mesh, per light (light_volume_mesh.comp.glsl):
-// - spot, 2D map through its shadow_matrix (a perspective frustum): a grid of
-//   (R+1)² vertices over the map's NDC square, each the light's position moved
-//   along the texel's ray to the distance taken from the map, closed by side
-//   walls from the grid's border to the light's position (the apex). The
-//   volume is the frustum cut by the displaced grid.
-// - point light or wide spot (cube map): the six faces' grids. A vertex on a
-//   cube edge or corner is computed once, by the first face that holds it (a
-//   canonical lattice point on the cube's surface), and copied into the other
-//   faces' slots: the mesh is closed across the seams, bit for bit.
-// - directional (orthographic 2D map): the grid moved along the light's travel
-//   to the stored depth, closed by vertical walls down to a "far" ring, a skirt
-//   at that depth out to an extent that holds every point the frame can see,
-//   walls up to a cap upstream of every such point, and the cap. The map's own
-//   near plane and square would leave out lit fog the eye sees (above the
-//   scene's bounds, or beside them, where the map says "no occluder"); the
-//   skirt keeps it inside.
-// Every vertex is shared by its cells (a height field needs no stitching at
-// depth discontinuities: the steep triangles between a near and a far texel
-// are the shadow's sides). Where the map holds +∞ or its clear value (no
-// occluder), and wherever it is farther than that, the depth is the frame's
-// backplate distance, 2·(|eye − light| + camera far) + 1 (for a directional
-// light: 2·far + 1 past the eye's depth), beyond every visible point, so the
-// mesh stays finite and closed.
+// The grid, per light (light_volume_mesh.comp.glsl): (R+1)² vertices over the
+// map's NDC square (a cube's faces' squares), each on the ray of points that
+// project there — from the light's position (spot, point) or along the
+// light's travel (directional) — and placed on it at a depth (below).
+// - spot, 2D map through its shadow_matrix (a perspective frustum): closed by
+//   side walls from the grid's border to the light's position (the apex). The
+//   volume is the frustum cut by the surface.
+// - point light or wide spot (cube map): the six faces' grids, closed across
+//   the seams (a cube edge's or corner's ray is the same bits on every face).
+// - directional (orthographic 2D map): closed by vertical walls down to a
+//   "far" ring, a skirt at that depth out to an extent that holds every point
+//   the frame can see, walls up to a cap upstream of every such point, and the
+//   cap. The map's own near plane and square would leave out lit fog the eye
+//   sees (above the scene's bounds, or beside them, where the map says "no
+//   occluder"); the skirt keeps it inside.
+// Where the map holds +∞ or its clear value (no occluder), and wherever it is
+// farther than that, the depth is the frame's backplate distance,
+// 2·(|eye − light| + camera far) + 1 (for a directional light: 2·far + 1 past
+// the eye's depth), beyond every visible point, so the mesh stays finite and
+// closed.
 //
 // Two meshes (Depth):
-// - texel: the lit volume above, each vertex at the depth of the texel that
-//   holds its direction (vertex i of R takes texel ⌊i·S/R⌋, the last clamped
-//   to S − 1; the light_volume method uses R = S).
-// - shell (McCool's conservative volume, for sv_march): the closed surface of
-//   the shell between an inner grid, each vertex at the minimum over every
+// - texel (light_volume): the shadow map's own steps, exactly the region its
+//   test calls lit. Each cell is a flat quad at its texel's lit depth (the
+//   texel under the cell's centre, texel c when R = S; the stored depth moved
+//   on by the test's bias, scene.glsl's shadow_visibility, in float as it
+//   compares), over exactly the directions that read that texel, and
+//   vertical walls (on the rays between cells) join it to its neighbours at
+//   theirs. A height field through the texels' depths at the cells' corners,
+//   as this mesh was before, is half a texel off what the test decides: at
+//   R = S it lost to raymarch at 256 steps on the same map (docs/decisions.md).
+//   A wall where neighbours' depths agree has no area (no crossing); the
+//   spot's and the directional map's border sides step from each border cell's
+//   depth to one depth per border vertex shared by both segments there, so
+//   that the edges running to the apex (or the far ring) are shared exactly. A
+//   cube's walls across its edges are built by the face of the lower index.
+//   Several walls meet a ray between cells at several depths: the mesh is
+//   closed as a surface (its edges cancel as stretches of that ray), not edge
+//   for edge, and a vertex is computed from its ray and its depth by one
+//   `precise` expression wherever it is used, so shared corners are the same
+//   bits.
+// - shell (McCool's conservative volume, for sv_march): a height field (every
+//   vertex shared by its cells; on a cube, computed by the first face that
+//   holds it and copied into the others' slots), the closed surface of the
+//   shell between an inner grid, each vertex at the minimum over every
 //   texel of the cells that share it, and an outer grid at their maximum moved
 //   on past the shadow test's bias and the chords across a cell (beyond_lit in
 //   the shader), joined along the border by strips (a spot's frustum side, a
@@ -64,8 +78,10 @@
 // bytes (128 MiB on llvmpipe, 1.68 M records); the build writes through bound
 // ranges no larger than that (max_records_per_binding()), and a pass that
 // reads triangles() must do the same when triangle_count() exceeds it. An R²
-// spot grid is 2R² + 4R triangles (R = 1024: 168 MB), a cube 12R², a
-// directional light 2R² + 12R + 14; a shell 4R² + 8R, 24R² and 4R² + 8R.
+// spot grid is 6R² + 12R triangles (R = 1024: 505 MB; per cell its top and
+// two walls, per border segment three sides), a cube 36R² + 48R (two records
+// per face border segment for the walls across its edges), a directional
+// light 6R² + 20R + 14; a shell 4R² + 8R, 24R² and 4R² + 8R.
 #include "gpu/gl.hpp"
 #include "methods/kit/lit_interval_pass.hpp"
 #include "methods/kit/scene_frame.hpp"

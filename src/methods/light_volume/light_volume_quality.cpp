@@ -7,11 +7,13 @@ namespace {
 // clang-format off
 const Case rows[] = {
   // light_volume counts a mesh that follows the 1024² shadow map on a 256²
-  // grid (the default): what remains is the grid's cells along shadow edges,
-  // where a face cuts a cell diagonally, Γ and the reference's quadrature.
-  {"light_volume", "biri_sphere", {}, 0.03, "the sphere's round shadow edge on a 256² grid, beside the apex in view (measured 0.016)"},
-  {"light_volume", "teapot_spot", {}, 0.006, "the teapot's shadow edges on a 256² grid (measured 0.0022)"},
-  {"light_volume", "three_lights", {}, 0.01, "three kinds of maps, a point light's cube among them (measured 0.0028)"},
+  // grid (the default), each cell a step at the depth of the texel under its
+  // centre: what remains is the grid's cells along shadow edges, each all lit
+  // or all shadowed, Γ and the reference's quadrature. Issue 24 asks for 1%
+  // at the defaults on these three scenes: no bound above it.
+  {"light_volume", "biri_sphere", {}, 0.01, "the sphere's round shadow edge on a 256² grid, beside the apex in view (measured 0.0084)"},
+  {"light_volume", "teapot_spot", {}, 0.006, "the teapot's shadow edges on a 256² grid (measured 0.0014)"},
+  {"light_volume", "three_lights", {}, 0.01, "three kinds of maps, a point light's cube among them (measured 0.0030)"},
 };
 // clang-format on
 
