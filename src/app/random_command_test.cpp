@@ -34,20 +34,24 @@ TEST(RandomCommand, ASceneFileIsJudgedAtTheDefaultsAndInEveryTrial) {
 // and a line a killed run left unfinished is dropped and its seed run again.
 TEST(RandomCommand, ARerunResumesFromTheResultsFile) {
   const fs::path results = work_dir() / "resume.csv";
-  const std::string args = "random --seeds 0:2 --methods analytic --size 16x12 --results " + results.string();
+  // Whether the seeds' judgements pass is not what this holds: the exit status
+  // is the same on every run, as a resumed run counts the file's failures too.
+  const std::string args = "random --seeds 0:2 --methods analytic --size 16x12 --failures " +
+                           (work_dir() / "failures").string() + " --results " + results.string();
   const Outcome first = run_airlight(args);
-  ASSERT_EQ(first.status, 0) << first.err;
+  ASSERT_TRUE(first.status == 0 || first.status == 1) << first.err;
   const std::string rows = read_text(results);
   ASSERT_FALSE(rows.empty());
 
   const Outcome second = run_airlight(args);
-  ASSERT_EQ(second.status, 0) << second.err;
+  EXPECT_EQ(second.status, first.status) << second.err;
   EXPECT_NE(second.err.find("2 already in " + results.string()), std::string::npos) << second.err;
   EXPECT_EQ(read_text(results), rows);
 
   std::ofstream(results, std::ios::app) << "2,0,,analytic,defa";  // a killed run's last line
-  const Outcome third = run_airlight("random --seeds 0:3 --methods analytic --size 16x12 --results " + results.string());
-  ASSERT_EQ(third.status, 0) << third.err;
+  const Outcome third = run_airlight("random --seeds 0:3 --methods analytic --size 16x12 --no-shrink --failures " +
+                                     (work_dir() / "failures").string() + " --results " + results.string());
+  ASSERT_TRUE(third.status == 0 || third.status == 1) << third.err;
   EXPECT_NE(third.err.find("2 already in"), std::string::npos) << third.err;
   const std::string after = read_text(results);
   EXPECT_EQ(after.rfind(rows, 0), 0u);
