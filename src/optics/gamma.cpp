@@ -64,16 +64,24 @@ Foot foot_of(const Ray& ray, const glm::dvec3& light) {
   return f;
 }
 
-// The light's angular factor at s: phase · spot cone (1 for point lights).
-double angular_factor(const Phase& phase_fn, const Light& light, const Ray& ray, const Foot& f, double s) {
-  const double p = phase(phase_fn, -std::tanh(s));
-  if (light.type != LightType::spot || light.edge_deg <= 0.0f) return p;
+// The light's angular factor at s: phase · spot cone (1 for point lights),
+// and under the simplified model its falloff over the physical one's,
+// r²/(a1·r² + a0) (Nilsson eq. 2.13), r = h·cosh s.
+double angular_factor(const Phase& phase_fn, const LightModel& model, const Light& light, const Ray& ray,
+                      const Foot& f, double s) {
+  double factor = phase(phase_fn, -std::tanh(s));
+  if (model.type == LightModelType::simplified) {
+    const double r2 = f.h * f.h * std::cosh(s) * std::cosh(s);
+    factor *= r2 / (double(model.a1) * r2 + double(model.a0));
+  }
+  if (light.type != LightType::spot || light.edge_deg <= 0.0f) return factor;
   const glm::dvec3 from_light = std::tanh(s) * ray.dir - f.normal / std::cosh(s);
-  return p * spot_cone(light, glm::normalize(from_light));
+  return factor * spot_cone(light, glm::normalize(from_light));
 }
 
-// ∫_{t0}^{t1} p(cos θ)·cone·exp(-σt(x + r))/r² dx per channel, by the panels above.
-glm::dvec3 biri_angular(const Phase& phase_fn, const glm::dvec3& sigma_t, const Light& light,
+// ∫_{t0}^{t1} p(cos θ)·cone·exp(-σt(x + r))/r² dx per channel, by the panels
+// above; under the simplified model (σt = 0, isotropic p) 1/(a1·r² + a0) for 1/r².
+glm::dvec3 biri_angular(const Phase& phase_fn, const LightModel& model, const glm::dvec3& sigma_t, const Light& light,
                         const Ray& ray, double t0, double t1) {
   const Foot f = foot_of(ray, glm::dvec3(light.position));
   const double s0 = stable_asinh((t0 - f.xs) / f.h), s1 = stable_asinh((t1 - f.xs) / f.h);
@@ -88,7 +96,7 @@ glm::dvec3 biri_angular(const Phase& phase_fn, const glm::dvec3& sigma_t, const 
       const double s = 0.5 * (a + b) + 0.5 * (b - a) * (i < 4 ? -gl_x[i] : gl_x[i - 4]);
       const double w = 0.5 * (b - a) * gl_w[i % 4];
       const double growth = e0 * std::expm1(s - s0);  // (x + r) - (x + r)(t0), no cancellation
-      sum += w * angular_factor(phase_fn, light, ray, f, s) / std::cosh(s) * glm::exp(-sigma_t * growth);
+      sum += w * angular_factor(phase_fn, model, light, ray, f, s) / std::cosh(s) * glm::exp(-sigma_t * growth);
     }
     if (slow * e0 * std::expm1(b - s0) > tail_growth) break;
     a = b;
@@ -130,12 +138,14 @@ glm::dvec3 nilsson_piece(const Medium& medium, const LightModel& model, const Li
 glm::dvec3 local_piece(const Medium& medium, const LightModel& model, const Light& light, const Ray& ray,
                        double a, double b) {
   if (!(b > a)) return glm::dvec3(0.0);
-  if (model.type == LightModelType::simplified) return nilsson_piece(medium, model, light, ray, a, b);
   const bool smooth_edge = light.type == LightType::spot && light.edge_deg > 0.0f;
+  const glm::dvec3 sigma_s(medium.sigma_s), intensity(light.intensity);
+  if (model.type == LightModelType::simplified) {  // isotropic, T = 1 (Nilsson 2.5); the edge has no closed form
+    if (!smooth_edge) return nilsson_piece(medium, model, light, ray, a, b);
+    return sigma_s * intensity * biri_angular(Phase{}, model, glm::dvec3(0.0), light, ray, a, b);
+  }
   if (isotropic(medium.phase) && !smooth_edge) return sun_piece(medium, light, ray, a, b);
-  const glm::dvec3 sigma_t(medium.sigma_t());
-  return glm::dvec3(medium.sigma_s) * glm::dvec3(light.intensity) *
-         biri_angular(medium.phase, sigma_t, light, ray, a, b);
+  return sigma_s * intensity * biri_angular(medium.phase, model, glm::dvec3(medium.sigma_t()), light, ray, a, b);
 }
 
 // A spot over the pieces of [t0, t1] its cone lights (hard cut at cone_deg,
@@ -145,7 +155,7 @@ glm::dvec3 spot_gamma(const Medium& medium, const LightModel& model, const Light
                       double t1) {
   const glm::dvec3 apex(light.position), axis = glm::normalize(glm::dvec3(light.direction));
   const double cone = light.cone_deg * pi / 180.0, inner = cone - light.edge_deg * pi / 180.0;
-  const bool cut = light.edge_deg > 0.0f && inner > 0.0 && model.type == LightModelType::physical;
+  const bool cut = light.edge_deg > 0.0f && inner > 0.0;
   const ConeIntervals lit = cone_intervals(apex, axis, cone, ray.origin, ray.dir, t0, t1);
   glm::dvec3 sum(0.0);
   for (int k = 0; k < lit.count; ++k) {

@@ -174,6 +174,13 @@ TEST(Gamma, SpotsClipToTheirConeExactly) {
     make_spot(rng, c, false);
     c.scene.light_model = {LightModelType::simplified, float(uniform(rng, 0.0, 2.0)), float(uniform(rng, 0.01, 2.0))};
   }));
+  // The random scenes' harness found the smooth edge left out here (41 % off).
+  worst = std::max(worst, sweep("Γ spot, simplified, smooth edge (Biri's panels, Nilsson's falloff)", 10000, 33,
+                                [](Rng& rng, Config& c) {
+                                  make_spot(rng, c, true);
+                                  c.scene.light_model = {LightModelType::simplified, float(uniform(rng, 0.0, 2.0)),
+                                                         float(uniform(rng, 0.01, 2.0))};
+                                }));
   // The smooth edge (Biri with the cone factor) sets the bound: the edge's
   // smoothstep in the angle varies fastest along a long clear ray or close to
   // the apex; hard edges are cut exactly (measured: docs/decisions.md).

@@ -76,7 +76,7 @@ vec3 biri_angular(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float 
   float h_true = length(off), h = max(h_true, MIN_LIGHT_DISTANCE);
   vec3 normal = h_true > 0.0 ? off / h_true : normalize(cross(dir, vec3(dir.y, dir.z, -dir.x)));
   bool smooth_edge = light_types[i] == LIGHT_SPOT && light_edges[i];
-  vec3 sigma_t = m.sigma_t;
+  vec3 sigma_t = simplified_model() ? vec3(0.0) : m.sigma_t;  // T = 1 (Nilsson 2.5)
   float fast = max(sigma_t.r, max(sigma_t.g, sigma_t.b)), slow = min(sigma_t.r, min(sigma_t.g, sigma_t.b));
   float s0 = stable_asinh((t0 - xs) / h), s1 = stable_asinh((t1 - xs) / h);
   float e0 = h * exp(s0);
@@ -88,7 +88,11 @@ vec3 biri_angular(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float 
     for (int k = 0; k < 8; ++k) {
       float s = 0.5 * (a + b) + 0.5 * (b - a) * (k < 4 ? -BIRI_GL_X[k] : BIRI_GL_X[k - 4]);
       float w = 0.5 * (b - a) * BIRI_GL_W[k % 4];
-      float f = component_phase(m, -tanh(s));
+      float f = simplified_model() ? INV_4PI : component_phase(m, -tanh(s));
+      if (simplified_model()) {  // its falloff over the physical one's, r²/(a1·r² + a0) (Nilsson eq. 2.13)
+        float r2 = h * h * cosh(s) * cosh(s);
+        f *= r2 / (frame.light_model_a1 * r2 + frame.light_model_a0);
+      }
       if (smooth_edge)
         f *= spot_cone(LIGHT(i).direction, LIGHT(i).cone, LIGHT(i).edge,
                        normalize(tanh(s) * dir - normal / cosh(s)));
@@ -103,9 +107,9 @@ vec3 biri_angular(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float 
 // One lit piece of a point or spot light (gamma.cpp local_piece); 0 if empty.
 vec3 local_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b) {
   if (!(b > a)) return vec3(0.0);
-  if (simplified_model()) return nilsson_piece(i, m, eye, dir, a, b);
   bool smooth_edge = light_types[i] == LIGHT_SPOT && light_edges[i];
-  if (isotropic_component(m) && !smooth_edge) return sun_piece(i, m, eye, dir, a, b);
+  if (simplified_model() && !smooth_edge) return nilsson_piece(i, m, eye, dir, a, b);  // the edge has no closed form
+  if (!simplified_model() && isotropic_component(m) && !smooth_edge) return sun_piece(i, m, eye, dir, a, b);
   return m.sigma_s * LIGHT(i).color * biri_angular(i, m, eye, dir, a, b);
 }
 
@@ -115,7 +119,7 @@ vec3 local_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b)
 vec3 spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1) {
   vec3 apex = LIGHT(i).position, axis = LIGHT(i).direction;
   float cone = LIGHT(i).cone, inner = cone - LIGHT(i).edge;
-  bool cut = light_edges[i] && inner > 0.0 && !simplified_model();
+  bool cut = light_edges[i] && inner > 0.0;
   ConeIntervals lit = cone_intervals(apex, axis, cone, eye, dir, t0, t1);
   vec3 sum = vec3(0.0);
   for (int k = 0; k < lit.count; ++k) {
