@@ -36,8 +36,9 @@ struct QuadratureSettings {
 // parts inside the spot's inner-edge cone, at the foot of the perpendicular from
 // a point or spot light with geometric grading around it (1/r² peaks there), and
 // into min_segments even panels; then globally adaptive G7K15 in double
-// precision. Where V differs between neighbouring nodes of a panel, the
-// boundary is bisected to 1e-6·(t1 - t0) and each side integrated separately.
+// precision. V is probed at each panel's nodes and ends; where it differs
+// between neighbouring probes, the boundary is bisected to 1e-6·(t1 - t0) and
+// each side integrated separately.
 // V may be empty (always lit). Through a light, r is clamped at
 // min_light_distance (light.hpp), so the result is finite (never NaN/Inf).
 glm::dvec3 airlight_quadrature(const Scene& scene, const Light& light, const Ray& ray,
