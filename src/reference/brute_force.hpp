@@ -30,7 +30,7 @@ namespace airlight::reference {
 struct BruteForceSettings {
   // Even probes along each view ray per light, besides those placed by shadow
   // edges and crossings: a safety net for anything those miss.
-  int probes = 4096;
+  int probes = 1024;
   double rel_tol = 1e-10;  // of each piece's Gauss–Kronrod integral
 };
 

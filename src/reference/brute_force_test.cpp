@@ -127,6 +127,11 @@ struct Worst {
 // The relative error's floor: 1e-4 of the image's brightest pixel, so that
 // pixels 1e4 times darker than the light shafts do not judge the reference.
 constexpr double floor_fraction = 1e-4;
+// The reference's rel_tol, 1e-3 of each light's integral: its |K15 − G7|
+// estimates are conservative, Embree's float rays move shadow edges by ~1e-7
+// of the coordinates and the image rounds to float (6e-8), all far below it
+// (measured worst: 3e-4, docs/decisions.md "The reference checked by brute force").
+constexpr double tolerance = 1e-3;
 
 Worst compare(const Image& ref, const std::vector<glm::ivec2>& pixels, const std::vector<dvec3>& brute) {
   double brightest = 0.0;
@@ -166,22 +171,37 @@ std::vector<glm::ivec2> probe_pixels(const Image& ref) {
 }
 
 TEST(BruteForce, ReferenceMatchesOnEveryBuiltinScene) {
-  constexpr int width = 64, height = 48;
+  constexpr int width = 32, height = 24;
   for (const std::string& name : builtin_scene_names()) {
     const Scene scene = builtin_scene(name);
-    const auto t0 = std::chrono::steady_clock::now();
     const Image ref = render(scene, width, height).airlight;
-    const auto t1 = std::chrono::steady_clock::now();
     const std::vector<glm::ivec2> pixels = probe_pixels(ref);
     const Worst worst = compare(ref, pixels, brute_force_airlight(scene, width, height, pixels));
-    const auto t2 = std::chrono::steady_clock::now();
-    std::printf("%-18s worst %.2e at (%d, %d): %.6g vs %.6g  [reference %.2f s, brute %.2f s]\n", name.c_str(),
-                worst.error, worst.pixel.x, worst.pixel.y, worst.reference, worst.brute,
-                std::chrono::duration<double>(t1 - t0).count(), std::chrono::duration<double>(t2 - t1).count());
-    EXPECT_LT(worst.error, 2e-3) << name;
+    std::printf("%-18s worst %.2e at (%d, %d): %.6g vs %.6g\n", name.c_str(), worst.error, worst.pixel.x,
+                worst.pixel.y, worst.reference, worst.brute);
+    EXPECT_LT(worst.error, tolerance) << name;
   }
 }
 
+// Every pixel of a small image, on every built-in: the pixels between the
+// probes above are where the reference lost lit slivers (whole-ray panels
+// around a spot, panel ends, 32 first segments in toth_hall: up to 45%).
+TEST(BruteForceEveryPixel, ReferenceMatchesOnEveryBuiltinScene) {
+  constexpr int width = 32, height = 24;
+  std::vector<glm::ivec2> pixels;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) pixels.push_back({i, j});
+  for (const std::string& name : builtin_scene_names()) {
+    const Scene scene = builtin_scene(name);
+    const Image ref = render(scene, width, height).airlight;
+    const auto t0 = std::chrono::steady_clock::now();
+    const Worst worst = compare(ref, pixels, brute_force_airlight(scene, width, height, pixels));
+    std::printf("%-18s worst %.2e at (%d, %d): %.6g vs %.6g  [brute %.2f s]\n", name.c_str(), worst.error,
+                worst.pixel.x, worst.pixel.y, worst.reference, worst.brute,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    EXPECT_LT(worst.error, tolerance) << name;
+  }
+}
 
 }  // namespace
 }  // namespace airlight::reference
