@@ -183,7 +183,7 @@ TEST(Cli, ListMethodsGivesEachSettingsRangeAndDefault) {
   ASSERT_EQ(o.status, 0) << o.err;
   for (const char* line :
        {"\n    rel_tol       (number in [1e-07, 0.1], default 0.001)  relative accuracy of each pixel's airlight integral\n",
-        "\n    min_segments  (integer in [1, 4096], default 32)       initial panels per ray",
+        "\n    min_segments  (integer in [1, 4096], default 128)      initial panels per ray",
         "\n    jitter             (one of: none, white, blue; default none)            per-pixel offset",
         "\n    depth_aware        (true or false, default true)                        move each pixel's"})
     EXPECT_NE(o.out.find(line), std::string::npos) << line << "\nnot in:\n" << o.out;

@@ -27,15 +27,18 @@ struct QuadratureSettings {
   int max_depth = 30;      // bisections of an initial panel
 };
 
-// ∫_{t0}^{t1} V(x)·e(x) dx per channel (t1 finite; 0 if t1 <= t0). A beam
-// light's integral runs over the part inside its box only (beam_interval,
-// light.hpp), so that no panel straddles the box's faces, where e jumps. Panels break
-// at volume crossings, at the ends of the parts inside the spot's cone and its
-// inner-edge cone (cone_intervals, light.hpp), at the foot of the
-// perpendicular from a point or spot light with geometric grading around it (1/r²
-// peaks there), and into min_segments even panels; then globally adaptive G7K15
-// in double precision. Where V differs between neighbouring nodes of a panel, the
-// boundary is bisected to 1e-6·(t1 - t0) and each side integrated separately.
+// ∫_{t0}^{t1} V(x)·e(x) dx per channel (t1 finite; 0 if t1 <= t0). The integral
+// runs over the part where the light reaches only: inside a beam's box
+// (beam_interval, light.hpp) or inside a spot's cone (cone_intervals, light.hpp),
+// so that no panel straddles the faces where e jumps and the min_segments panels
+// spread over lit ground, not over the whole ray (a lit sliver between a panel's
+// nodes would be missed). Panels break at volume crossings, at the ends of the
+// parts inside the spot's inner-edge cone, at the foot of the perpendicular from
+// a point or spot light with geometric grading around it (1/r² peaks there), and
+// into min_segments even panels; then globally adaptive G7K15 in double
+// precision. V is probed at each panel's nodes and ends; where it differs
+// between neighbouring probes, the boundary is bisected to 1e-6·(t1 - t0) and
+// each side integrated separately.
 // V may be empty (always lit). Through a light, r is clamped at
 // min_light_distance (light.hpp), so the result is finite (never NaN/Inf).
 glm::dvec3 airlight_quadrature(const Scene& scene, const Light& light, const Ray& ray,

@@ -153,7 +153,7 @@ CachedReference render_reference(const Scene& scene, int width, int height, cons
 
 std::string reference_key(const Scene& scene, int width, int height, const Settings& settings) {
   Hasher h;
-  h.add(std::string_view("airlight-reference/2"));  // bump when the reference's output or the key changes
+  h.add(std::string_view("airlight-reference/4"));  // bump when the reference's output or the key changes
   add(h, scene.camera);
   for (const auto& c : {scene.medium.sigma_s, scene.medium.sigma_a}) h.add(c);
   add(h, scene.medium.phase);

@@ -51,7 +51,7 @@ MethodInfo reference_method() {
   return {"reference", "docs/design.md §1",
           "CPU ground truth: Embree visibility, adaptive quadrature per lit interval",
           {{"rel_tol", T::real, 1e-3, 1e-7, 0.1, {}, "relative accuracy of each pixel's airlight integral"},
-           {"min_segments", T::integer, 32, 1, 4096, {},
+           {"min_segments", T::integer, 128, 1, 4096, {},
             "initial panels per ray: shadow features thinner than 1/min_segments of the ray may be missed"}},
           [](const Settings& s) { return std::make_unique<ReferenceMethod>(s); },
           80, reference_memory, {.engine_maps = false}, {}};
