@@ -79,7 +79,7 @@ void main() {
   if (keeps_own) sum /= float(block * block);  // as a partial sum: M² times it is the pixel's estimate
 #ifdef NORMALIZED
   vec3 guide = light_guide(dir, d);
-  imageStore(guide_out, pixel, vec4(guide, 0.0));
+  imageStore(guide_out, pixel, vec4(guide, volume_key(dir, d)));
   vec4 result = guided(sum, guide);
 #else
   vec4 result = vec4(sum, 1.0);

@@ -251,6 +251,41 @@ vec3 light_guide(vec3 dir, float d) {
   return guide;
 }
 
+// The volume key of interleaved's gather (not in Tóth): the share of the guide
+// (light_guide_of) that the lights reach past V and light map, from KEY_POINTS
+// points per light at the march's own quantiles (step_sample) — what the
+// guide leaves out and the gather must share between rays. Where the rays of a
+// window cross a volume's lit part differently — a volume in a shadow beside
+// haze that is lit, a shadow plane seen edge-on inside a volume — the key
+// jumps, as the G-buffer distance does at a silhouette, and the gather leaves
+// those neighbours out (gather.comp.glsl). It only decides which neighbours
+// join, never the value, so a few points suffice. Without volumes it is 0.
+#if VOLUME_COUNT > 0
+const int KEY_POINTS = 8;
+float volume_key(vec3 dir, float d) {
+  float all_mass = 0.0, lit_mass = 0.0;
+#define ADD_LIGHT_KEY(i)                                                                               \
+  {                                                                                                    \
+    vec2 lit = lit_interval(i, frame.eye, dir, 0.0, d);                                                \
+    if (lit.y > lit.x) {                                                                               \
+      Segment s = light_steps(i, dir, lit);                                                            \
+      float mass = channel_mean(light_guide_of(i, dir, d)), seen = 0.0;                                \
+      for (int k = 0; k < KEY_POINTS; ++k) {                                                           \
+        vec3 x = frame.eye + step_sample(s, (float(k) + 0.5) / float(KEY_POINTS), KEY_POINTS).x * dir; \
+        seen += channel_mean(light_map(i, x)) * shadow_visibility(i, x);                               \
+      }                                                                                                \
+      all_mass += mass;                                                                                \
+      lit_mass += mass * seen / float(KEY_POINTS);                                                     \
+    }                                                                                                  \
+  }
+  FOR_EACH_LIGHT(ADD_LIGHT_KEY)
+#undef ADD_LIGHT_KEY
+  return all_mass > 0.0 ? lit_mass / all_mass : 0.0;
+}
+#else
+float volume_key(vec3 dir, float d) { return 0.0; }
+#endif
+
 // A pixel's sum divided by its guide per channel (0 where the guide is), and in
 // w whether any light reaches its ray (1) or not (0).
 vec4 guided(vec3 sum, vec3 guide) {
