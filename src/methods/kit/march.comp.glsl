@@ -10,7 +10,7 @@
 // (methods/interleaved/) add the block's partial sums. M = 1 is raymarch.
 // `normalized`: the partial sums are divided by the pixel's light guide
 // (march.glsl) for interleaved's normalized gather; w says whether any light
-// reaches the ray.
+// reaches the ray. The guide target carries the volume key in w (march.glsl).
 // GUARD (interleaved's guard, methods/interleaved/gather.comp.glsl): the march
 // also accumulates, per pixel, the squared differences of successive samples'
 // terms (march.glsl) in rgb and its own sample count in w, for the gather to
