@@ -25,7 +25,12 @@
 // sum blurs the peak and spreads it over the cone's edge, whatever N. G carries
 // that change exactly, so what the window shares is only the smooth remainder
 // (σs·p, V, extinction). Neighbours whose rays no light reaches (G = 0, w = 0)
-// are left out like those across silhouettes.
+// are left out like those across silhouettes. Volume-aware (normalized, in
+// scenes with bounded volumes; not in Tóth): the guide carries the volumes'
+// σs but not V, so a neighbour whose volume key (march.glsl: the share of its
+// guide the lights reach) differs from this pixel's is left out too — at a
+// volume's outline, or a shadow plane seen edge-on inside it, the G-buffer
+// distance is the same on both sides.
 // Guarded (GUARD = k > 0, not in Tóth): a pixel beside a light's image
 // marched all N samples itself (march.comp.glsl, w = 2); it is left out of
 // every window and keeps its own estimate. For the others the vertical pass clamps the gathered
@@ -38,8 +43,8 @@
 // stands. SE falls as N grows, so the result converges to the pixel's own
 // march, i.e. to raymarch, whatever the gather's bias.
 // Specialized by GatherPass: BLOCK (M), VERTICAL, DEPTH_AWARE, NORMALIZED and
-// GUARD, so that each pass's loops have constant trip counts and the
-// horizontal pass carries no light guide.
+// GUARD, so that each pass's loops have constant trip counts and only the
+// vertical pass multiplies by the light guide.
 #include "methods/kit/march.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -53,6 +58,12 @@ layout(binding = BINDING_GUIDE) uniform sampler2D guides;  // the march's light 
 layout(binding = BINDING_SPREAD) uniform sampler2D spreads;  // the march's Σ(y_k − y_{k−1})² and n (guard)
 
 uniform float depth_threshold;  // relative to this pixel's distance
+// Volume-aware (normalized, scenes with bounded volumes): a neighbour whose
+// volume key (march.glsl: the lit share of its guide) differs from this
+// pixel's by more than this is left out like one across a silhouette (0.05
+// and 0.1 leave out the same pixels on biri_media; 0.2 lets more of the
+// volumes' edges blur at 32×24, docs/decisions.md).
+const float VOLUME_KEY_STEP = 0.1;
 
 #ifdef VERTICAL
 const ivec2 axis = ivec2(0, 1);  // along columns
@@ -65,9 +76,9 @@ const ivec2 axis = ivec2(1, 0);  // along rows
 // among them.
 const int SPAN = 2 * BLOCK - 1;
 vec3 partial[SPAN];
-bool joined[SPAN];  // inside the image, reached by some light (normalized), and on this pixel's surface
+bool joined[SPAN];  // inside the image, reached by some light (normalized), on this pixel's surface and key
 
-void fetch_neighbourhood(ivec2 pixel, int along, int size, float distance) {
+void fetch_neighbourhood(ivec2 pixel, int along, int size, float distance, float key) {
   for (int j = 0; j < SPAN; ++j) {
     int s = along - BLOCK + 1 + j;
     ivec2 neighbour = pixel + (clamp(s, 0, size - 1) - along) * axis;
@@ -77,6 +88,9 @@ void fetch_neighbourhood(ivec2 pixel, int along, int size, float distance) {
 #ifdef DEPTH_AWARE
     joined[j] = joined[j] && (j == BLOCK - 1 ||
                               abs(surface_distance(neighbour) - distance) <= depth_threshold * distance);
+#endif
+#if defined(NORMALIZED) && VOLUME_COUNT > 0
+    joined[j] = joined[j] && (j == BLOCK - 1 || abs(texelFetch(guides, neighbour, 0).w - key) <= VOLUME_KEY_STEP);
 #endif
   }
 }
@@ -132,7 +146,12 @@ void main() {
   int along = pixel.x * axis.x + pixel.y * axis.y;
   int size = frame_size().x * axis.x + frame_size().y * axis.y;
   float distance = surface_distance(pixel);
-  fetch_neighbourhood(pixel, along, size, distance);
+#ifdef NORMALIZED
+  float key = texelFetch(guides, pixel, 0).w;  // the march's volume key (march.glsl)
+#else
+  float key = 0.0;
+#endif
+  fetch_neighbourhood(pixel, along, size, distance, key);
   int first = window_start(along, size) - (along - BLOCK + 1);  // in the neighbourhood: 0 … M − 1
   vec3 sum = vec3(0.0);
   int count = 0;

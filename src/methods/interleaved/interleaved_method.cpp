@@ -58,16 +58,18 @@ MethodInfo interleaved_method() {
                "left out of the depth-aware gather"},
               {"gather", T::choice, 1, 0, 0, {"sum", "normalized"},
                "sum = Tóth's sum of the window's partial sums; normalized = each partial sum divided by its "
-               "pixel's unshadowed ∫I/r² (exact per light), the sum multiplied by the pixel's own, so that the "
-               "1/r² peak next to a light and the cone's edge do not blur (with equiangular steps, N = 64, 13–24× "
-               "less error than sum on teapot_spot, biri_sphere, three_lights)"},
+               "pixel's unshadowed ∫σs·I/r² (exact per light, bounded volumes' σs included), the sum multiplied "
+               "by the pixel's own, so that the 1/r² peak next to a light, the cone's edge and a volume's outline "
+               "do not blur (with equiangular steps, N = 64, 13–24× less error than sum on teapot_spot, "
+               "biri_sphere, three_lights); with bounded volumes, neighbours whose share of it that the lights "
+               "reach differs by more than 0.1 are left out, as across a silhouette"},
               {"guard", T::real, 2.0, 0.0, 100.0, {},
                "k: each pixel's gathered value is clamped to its own N/M² samples' estimate ± k standard errors "
                "(successive differences), so that where the window's rays differ — a lamp's image, a shadow edge — "
                "the pixel keeps its own march and the error keeps falling as N grows; 0 = Tóth's gather"}});
   return {"interleaved", "Tóth 2009 §4.1",
           "raymarch with the N samples spread over M×M pixel blocks (interleaved sampling, Keller & "
-          "Heidrich 2001) and gathered by a separable sum, normalized by each pixel's unshadowed ∫I/r² and "
+          "Heidrich 2001) and gathered by a separable sum, normalized by each pixel's unshadowed ∫σs·I/r² and "
           "depth-aware by default",
           kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<Interleaved>(s); },
           224, kit::gpu_memory(), {},

@@ -10,7 +10,7 @@
 // of media (unoccluded_airlight), and each lit interval's Γ is multiplied by a
 // ratio estimated at SAMPLES (a setting) points of the interval
 // (interval_correction), docs/decisions.md. A shader calls cut_into_pieces
-// once per pixel before lit_gamma.
+// (scene.glsl) once per pixel before lit_gamma.
 #include "methods/kit/closed_form.glsl"
 #include "methods/kit/equiangular.glsl"
 
@@ -72,34 +72,6 @@ vec3 interval_correction(int i, vec3 eye, vec3 dir, float a, float b) {
 }
 
 #if VOLUME_COUNT > 0
-// Bounded media (Biri §5.2): the pixel's ray [0, d] cut at the ends of its
-// chords through the volumes into pieces, each inside a fixed set of media:
-// breaks[0] = 0 < … < breaks[PIECES] = d (empty pieces where chords miss).
-const int PIECES = 2 * VOLUME_COUNT + 1;
-float breaks[PIECES + 1];
-
-void cut_into_pieces(vec3 dir, float d) {
-  breaks[0] = 0.0;
-  breaks[PIECES] = d;
-#define ADD_CHORD_ENDS(v)                                                          \
-  {                                                                                \
-    vec2 chord = box_overlap(frame.eye, dir, 0.0, d, VOLUME(v).lo, VOLUME(v).hi); \
-    bool hit = chord.x < chord.y;                                                  \
-    breaks[2 * v + 1] = hit ? chord.x : d;                                         \
-    breaks[2 * v + 2] = hit ? chord.y : d;                                         \
-  }
-  FOR_EACH_VOLUME(ADD_CHORD_ENDS)
-#undef ADD_CHORD_ENDS
-  // The 2·VOLUME_COUNT chord ends sorted by a bubble sort of constant trip
-  // counts (min and max, no data-dependent loop), in registers.
-  for (int pass = 1; pass < PIECES - 1; ++pass)
-    for (int j = 1; j < PIECES - 1; ++j) {
-      float lo = min(breaks[j], breaks[j + 1]), hi = max(breaks[j], breaks[j + 1]);
-      breaks[j] = lo;
-      breaks[j + 1] = hi;
-    }
-}
-
 // Γ over [a, b] piece by piece: per piece, the eye leg's exact transmittance
 // to its start times Σ over its media (the one that fills space and each
 // volume it lies in) of Γ with that medium's σs and phase and the piece's σt
@@ -126,7 +98,6 @@ vec3 unoccluded_airlight(int i, vec3 eye, vec3 dir, float a, float b) {
   return sum;
 }
 #else
-void cut_into_pieces(vec3 dir, float d) {}
 vec3 unoccluded_airlight(int i, vec3 eye, vec3 dir, float a, float b) { return closed_form_airlight(i, eye, dir, a, b); }
 #endif
 

@@ -10,7 +10,7 @@
 // (methods/interleaved/) add the block's partial sums. M = 1 is raymarch.
 // `normalized`: the partial sums are divided by the pixel's light guide
 // (march.glsl) for interleaved's normalized gather; w says whether any light
-// reaches the ray.
+// reaches the ray. The guide target carries the volume key in w (march.glsl).
 // GUARD (interleaved's guard, methods/interleaved/gather.comp.glsl): the march
 // also accumulates, per pixel, the squared differences of successive samples'
 // terms (march.glsl) in rgb and its own sample count in w, for the gather to
@@ -74,11 +74,12 @@ void main() {
   float d = surface_distance(pixel);
   bool keeps_own = near_light_image(pixel);
   SampleRange range = pixel_samples(pixel, keeps_own);
+  cut_into_pieces(dir, d);  // for the steps weighted by the volumes' scattering (march.glsl)
   vec3 sum = march_airlight(dir, d, range, step_offset(pixel));
   if (keeps_own) sum /= float(block * block);  // as a partial sum: M² times it is the pixel's estimate
 #ifdef NORMALIZED
   vec3 guide = light_guide(dir, d);
-  imageStore(guide_out, pixel, vec4(guide, 0.0));
+  imageStore(guide_out, pixel, vec4(guide, volume_key(dir, d)));
   vec4 result = guided(sum, guide);
 #else
   vec4 result = vec4(sum, 1.0);

@@ -71,6 +71,65 @@ bool any_unbounded_sun() {
 vec3 march_spread = vec3(0.0);
 #endif
 
+#if VOLUME_COUNT > 0
+// Equiangular steps weighted by the scattering (not in the documents): inside
+// a bounded volume σs may be many times the filling medium's (biri_media: 12×),
+// so the integrand jumps at the chord's ends and a short chord gets a few of the
+// N samples. Interleaved's pixels each take one residue of the indices
+// (Tóth §4.1), and where neighbouring rays cross a volume at other indices the
+// window adds some samples of a chord twice and misses others: a bias per
+// residue, seen as banding and as bright volume outlines. So the angle θ seen
+// from the light is spent in proportion to σ̄(x)·dθ, σ̄ the mean over channels
+// of σs on each piece of the ray (cut_into_pieces): sample k of N sits at the
+// same fraction of ∫σ̄/r² on every ray, as the light guide (light_guide_of)
+// measures it, and a chord gets its share of samples on every ray that crosses it.
+float piece_theta[PIECES + 1];  // of the current march: θ at each piece's ends
+float piece_mass[PIECES + 1];   // Σ of σ̄·Δθ over the pieces before
+float piece_sigma[PIECES];      // σ̄ on each piece
+
+float channel_mean(vec3 c) { return (c.r + c.g + c.b) / 3.0; }
+
+vec3 sigma_s_at(vec3 x) {
+  vec3 sigma = frame.medium_sigma_s;
+  if (simplified_model()) return sigma;  // the filling medium alone scatters (scattering)
+#define ADD_VOLUME_SIGMA_S(v) if (box_contains(x, VOLUME(v).lo, VOLUME(v).hi)) sigma += VOLUME(v).sigma_s;
+  FOR_EACH_VOLUME(ADD_VOLUME_SIGMA_S)
+#undef ADD_VOLUME_SIGMA_S
+  return sigma;
+}
+
+// The pieces of equiangular segment s (a light's march) and their masses; a
+// uniform segment (h = 0) keeps its even steps (step_sample).
+void weigh_pieces(vec3 dir, Segment s) {
+  if (s.h == 0.0) return;
+  piece_theta[0] = s.theta_a;
+  piece_mass[0] = 0.0;
+  for (int p = 0; p < PIECES; ++p) {
+    float a = clamp(breaks[p], s.a, s.b), b = clamp(breaks[p + 1], s.a, s.b);
+    piece_theta[p + 1] = p + 1 == PIECES ? s.theta_b : atan2_accurate(b - s.foot, s.h);
+    piece_sigma[p] = channel_mean(sigma_s_at(frame.eye + 0.5 * (a + b) * dir));
+    piece_mass[p + 1] = piece_mass[p] + piece_sigma[p] * max(piece_theta[p + 1] - piece_theta[p], 0.0);
+  }
+}
+
+// segment_sample with θ spent by σ̄: u ∈ (0, 1) of n at the fraction u of the
+// mass; plain equiangular where nothing scatters.
+vec2 step_sample(Segment s, float u, int n) {
+  float mass = piece_mass[PIECES];
+  if (s.h == 0.0 || !(mass > 0.0)) return segment_sample(s, u, n);
+  float target = u * mass;
+  int j = 0;
+  for (int p = 0; p < PIECES; ++p)
+    if (piece_mass[p + 1] > piece_mass[p] && piece_mass[p] <= target) j = p;
+  float theta = min(piece_theta[j] + (target - piece_mass[j]) / piece_sigma[j], piece_theta[j + 1]);
+  float y = s.h * tan(theta);
+  return vec2(s.foot + y, mass / (float(n) * piece_sigma[j]) * (s.h + y * y / s.h));  // dx = h/cos²θ·dθ
+}
+#else
+void weigh_pieces(vec3 dir, Segment s) {}
+vec2 step_sample(Segment s, float u, int n) { return segment_sample(s, u, n); }
+#endif
+
 // Σ over the range's samples k of w_k·Σ_{lights i in group} V_i·inscatter_i(x_k)
 // (Tóth eq. 1, Kingston eq. 26) on segment s of the ray eye + t·dir.
 vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) {
@@ -84,7 +143,7 @@ vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) 
   // Runtime bounds: the steps and this pixel's share of them are settings and
   // pixel positions, not the scene's structure.
   for (int k = r.first; k < r.end; k += r.stride) {
-    vec2 t = segment_sample(s, (float(k) + offset) / float(r.count), r.count);
+    vec2 t = step_sample(s, (float(k) + offset) / float(r.count), r.count);
     vec3 x = eye + t.x * dir;
     vec3 eye_depth = eye_leg_depth(eye, x);
     vec3 e = vec3(0.0);
@@ -106,6 +165,16 @@ vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) 
   return sum;
 }
 
+// Where light i's march over its lit interval `lit` puts its steps: equiangular
+// about a point or spot light (weighted by the scattering), else even.
+Segment light_steps(int i, vec3 dir, vec2 lit) {
+  bool even = SAMPLING == SAMPLING_UNIFORM || has_beam(i) || light_types[i] == LIGHT_DIRECTIONAL;
+  Segment s = even ? uniform_segment(lit.x, lit.y)
+                   : equiangular_segment(lit.x, lit.y, frame.eye, dir, LIGHT(i).position);
+  weigh_pieces(dir, s);
+  return s;
+}
+
 // Light i's own march over the part of [t0, t1] it lights: with equiangular
 // sampling even in the angle seen from a point or spot light, else (and along
 // a beam's box or a directional light) in even steps.
@@ -113,9 +182,7 @@ vec3 march_between(int i, vec3 dir, float t0, float t1, SampleRange r, float off
   vec3 eye = frame.eye;
   vec2 lit = lit_interval(i, eye, dir, t0, t1);
   if (!(lit.y > lit.x)) return vec3(0.0);
-  bool even = SAMPLING == SAMPLING_UNIFORM || has_beam(i) || light_types[i] == LIGHT_DIRECTIONAL;
-  Segment s = even ? uniform_segment(lit.x, lit.y) : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
-  return march_segment(dir, s, r, offset, i);
+  return march_segment(dir, light_steps(i, dir, lit), r, offset, i);
 }
 
 // Equiangular: light i's own march over the part of [0, d] it lights (the
@@ -143,18 +210,37 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset) {
 
 // ---- the guide of interleaved's normalized gather -------------------------------
 
-// Per channel, Σ over point and spot lights of I·∫dx/r² over the part of [0, d]
-// each lights (Δθ/h: exact, as in equiangular_segment), plus Σ over directional
-// lights of E times the length of [0, d] they light: L_air without σs·p, V, gobo, smooth edge and extinction. It
-// carries what changes fastest from pixel to pixel — the 1/h peak next to a
-// light, a cone's edge, the length of the ray — and is 0 where no light reaches.
+// ∫ of segment s's sample density over [a, b] ⊂ [s.a, s.b]: ∫dx/r² = Δθ/h about
+// the light's foot point (exact, as equiangular_segment), or the length.
+float segment_measure(Segment s, float a, float b) {
+  if (s.h == 0.0) return b - a;
+  return (atan2_accurate(b - s.foot, s.h) - atan2_accurate(a - s.foot, s.h)) / s.h;
+}
+
+// Per channel, Σ over point and spot lights of I·∫σs(x)·dx/r² over the part of
+// [0, d] each lights, plus Σ over directional lights of E·∫σs(x)·dx over the
+// part they light, σs(x) the filling medium's plus that of each volume the ray
+// crosses there (docs/design.md §1): L_air without p, V, gobo, smooth edge and
+// extinction. It carries what changes fastest from pixel to pixel — the 1/h
+// peak next to a light, a cone's edge, the length of the ray, a volume's
+// outline and chord — and is 0 where no light reaches.
 vec3 light_guide_of(int i, vec3 dir, float d) {
   vec3 eye = frame.eye;
   vec2 lit = lit_interval(i, eye, dir, 0.0, d);
   if (!(lit.y > lit.x)) return vec3(0.0);
-  if (light_types[i] == LIGHT_DIRECTIONAL) return LIGHT(i).color * (lit.y - lit.x);
-  Segment s = equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
-  return LIGHT(i).color * ((s.theta_b - s.theta_a) / s.h);
+  Segment s = light_types[i] == LIGHT_DIRECTIONAL ? uniform_segment(lit.x, lit.y)
+                                                  : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
+  vec3 guide = frame.medium_sigma_s * segment_measure(s, lit.x, lit.y);
+  if (!simplified_model()) {  // the simplified model scatters by the filling medium alone (scattering)
+#define ADD_VOLUME_GUIDE(v)                                                                   \
+    {                                                                                         \
+      vec2 chord = box_overlap(eye, dir, lit.x, lit.y, VOLUME(v).lo, VOLUME(v).hi);           \
+      if (chord.x < chord.y) guide += VOLUME(v).sigma_s * segment_measure(s, chord.x, chord.y); \
+    }
+    FOR_EACH_VOLUME(ADD_VOLUME_GUIDE)
+#undef ADD_VOLUME_GUIDE
+  }
+  return LIGHT(i).color * guide;
 }
 
 vec3 light_guide(vec3 dir, float d) {
@@ -164,6 +250,41 @@ vec3 light_guide(vec3 dir, float d) {
 #undef ADD_LIGHT_GUIDE
   return guide;
 }
+
+// The volume key of interleaved's gather (not in Tóth): the share of the guide
+// (light_guide_of) that the lights reach past V and light map, from KEY_POINTS
+// points per light at the march's own quantiles (step_sample) — what the
+// guide leaves out and the gather must share between rays. Where the rays of a
+// window cross a volume's lit part differently — a volume in a shadow beside
+// haze that is lit, a shadow plane seen edge-on inside a volume — the key
+// jumps, as the G-buffer distance does at a silhouette, and the gather leaves
+// those neighbours out (gather.comp.glsl). It only decides which neighbours
+// join, never the value, so a few points suffice. Without volumes it is 0.
+#if VOLUME_COUNT > 0
+const int KEY_POINTS = 8;
+float volume_key(vec3 dir, float d) {
+  float all_mass = 0.0, lit_mass = 0.0;
+#define ADD_LIGHT_KEY(i)                                                                               \
+  {                                                                                                    \
+    vec2 lit = lit_interval(i, frame.eye, dir, 0.0, d);                                                \
+    if (lit.y > lit.x) {                                                                               \
+      Segment s = light_steps(i, dir, lit);                                                            \
+      float mass = channel_mean(light_guide_of(i, dir, d)), seen = 0.0;                                \
+      for (int k = 0; k < KEY_POINTS; ++k) {                                                           \
+        vec3 x = frame.eye + step_sample(s, (float(k) + 0.5) / float(KEY_POINTS), KEY_POINTS).x * dir; \
+        seen += channel_mean(light_map(i, x)) * shadow_visibility(i, x);                               \
+      }                                                                                                \
+      all_mass += mass;                                                                                \
+      lit_mass += mass * seen / float(KEY_POINTS);                                                     \
+    }                                                                                                  \
+  }
+  FOR_EACH_LIGHT(ADD_LIGHT_KEY)
+#undef ADD_LIGHT_KEY
+  return all_mass > 0.0 ? lit_mass / all_mass : 0.0;
+}
+#else
+float volume_key(vec3 dir, float d) { return 0.0; }
+#endif
 
 // A pixel's sum divided by its guide per channel (0 where the guide is), and in
 // w whether any light reaches its ray (1) or not (0).

@@ -47,7 +47,8 @@ public:
   // program reads besides.
   void run(const kit::SceneFrame& frame, const gpu::Texture& target);
 
-  // With `normalized`: each pixel's light guide from the last run (RGBA32F, rgb).
+  // With `normalized`: each pixel's light guide (rgb) and volume key (w,
+  // march.glsl) from the last run (RGBA32F).
   const gpu::Texture& guide() const { return guide_; }
 
   // With `guard`: per pixel Σ of squared successive differences (rgb) and its

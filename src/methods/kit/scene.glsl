@@ -289,3 +289,36 @@ vec3 inscatter(int i, vec3 x, vec3 view_dir, vec3 eye_depth) {
   vec3 map = light_map(i, x);
   return map == vec3(0.0) ? vec3(0.0) : map * inscatter_unmapped(i, x, view_dir, eye_depth);
 }
+
+// ---- pieces of a view ray ------------------------------------------------------
+#if VOLUME_COUNT > 0
+// Bounded media (Biri 2006 §5.2): the pixel's ray [0, d] cut at the ends of its
+// chords through the volumes into pieces, each inside a fixed set of media:
+// breaks[0] = 0 < … < breaks[PIECES] = d (empty pieces where chords miss).
+const int PIECES = 2 * VOLUME_COUNT + 1;
+float breaks[PIECES + 1];
+
+void cut_into_pieces(vec3 dir, float d) {
+  breaks[0] = 0.0;
+  breaks[PIECES] = d;
+#define ADD_CHORD_ENDS(v)                                                          \
+  {                                                                                \
+    vec2 chord = box_overlap(frame.eye, dir, 0.0, d, VOLUME(v).lo, VOLUME(v).hi); \
+    bool hit = chord.x < chord.y;                                                  \
+    breaks[2 * v + 1] = hit ? chord.x : d;                                         \
+    breaks[2 * v + 2] = hit ? chord.y : d;                                         \
+  }
+  FOR_EACH_VOLUME(ADD_CHORD_ENDS)
+#undef ADD_CHORD_ENDS
+  // The 2·VOLUME_COUNT chord ends sorted by a bubble sort of constant trip
+  // counts (min and max, no data-dependent loop), in registers.
+  for (int pass = 1; pass < PIECES - 1; ++pass)
+    for (int j = 1; j < PIECES - 1; ++j) {
+      float lo = min(breaks[j], breaks[j + 1]), hi = max(breaks[j], breaks[j + 1]);
+      breaks[j] = lo;
+      breaks[j + 1] = hi;
+    }
+}
+#else
+void cut_into_pieces(vec3 dir, float d) {}
+#endif
