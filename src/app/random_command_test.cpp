@@ -59,5 +59,22 @@ TEST(RandomCommand, ARerunResumesFromTheResultsFile) {
   EXPECT_NE(after.find("\n2,"), std::string::npos);
 }
 
+// A known failure that passes fails the run, so the list cannot outlive its defects.
+TEST(RandomCommand, AKnownFailureThatPassesFails) {
+  const fs::path known = write_file("known.csv", "# seed,method,trial,reason\nbiri_sphere,analytic,defaults,test\n");
+  const Outcome o = run_airlight("random --builtin biri_sphere --methods analytic --size 16x12 --no-shrink --failures " +
+                                 (work_dir() / "failures").string() + " --known " + known.string());
+  EXPECT_EQ(o.status, 1) << o.err;
+  EXPECT_NE(o.err.find("analytic (defaults) fails: rel_rmse: listed in " + known.string() + " but passes: take its line out"),
+            std::string::npos) << o.err;
+}
+
+TEST(RandomCommand, AKnownFailuresLineWithoutItsReasonIsBadInput) {
+  const fs::path known = write_file("short.csv", "7,hybrid,defaults\n");
+  const Outcome o = run_airlight("random --builtin biri_sphere --methods analytic --known " + known.string());
+  expect_bad_input(o, known.string(), "line 1", "three fields");
+  EXPECT_NE(o.err.find("expected seed,method,trial,reason"), std::string::npos) << o.err;
+}
+
 }  // namespace
 }  // namespace airlight

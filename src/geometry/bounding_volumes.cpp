@@ -91,16 +91,20 @@ std::vector<BeamPolygon> box_faces(const OrientedBox& box, int source) {
 }
 
 LightRegions::LightRegions(const LightOrigin& light, std::span<const BoundingVolumes> volumes)
-    : LightRegions(light, outer_faces(volumes), inner_faces(volumes, light)) {}
+    : LightRegions(light, outer_faces(volumes), inner_faces(volumes, light),
+                   !light.directional && std::any_of(volumes.begin(), volumes.end(), [&](const BoundingVolumes& v) {
+                     return contains(v.outer, light.position);
+                   })) {}
 
 LightRegions::LightRegions(const LightOrigin& light, const std::vector<BeamPolygon>& outer_faces,
-                           const std::vector<BeamPolygon>& inner_faces)
+                           const std::vector<BeamPolygon>& inner_faces, bool surrounded)
     : epsilon_(beam_epsilon(light, outer_faces)),
+      surrounded_(surrounded),
       outer_(light, outer_faces, epsilon_),
       inner_(light, inner_faces, epsilon_) {}
 
 LightRegions::Region LightRegions::classify(const glm::dvec3& p) const {
-  if (outer_.classify(p) == BeamTree::Side::lit) return Region::fully_lit;
+  if (outer_.classify(p) == BeamTree::Side::lit) return surrounded_ ? Region::uncertain : Region::fully_lit;
   if (inner_.classify(p) == BeamTree::Side::shadowed) return Region::unlit;
   return Region::uncertain;
 }
@@ -109,7 +113,7 @@ void LightRegions::partition(const BeamPolygon& polygon, std::vector<BeamPolygon
                              std::vector<BeamPolygon>& uncertain,
                              std::vector<BeamPolygon>& unlit) const {
   std::vector<BeamPolygon> shadowed;
-  outer_.partition(polygon, fully_lit, shadowed);
+  outer_.partition(polygon, surrounded_ ? uncertain : fully_lit, shadowed);
   for (const BeamPolygon& part : shadowed) inner_.partition(part, uncertain, unlit);
 }
 

@@ -42,7 +42,8 @@ public:
   enum class Region { fully_lit, uncertain, unlit };
 
   // ε is beam_epsilon of the outer faces. A point light inside an object's outer volume may be
-  // inside the object, where its inner volume proves nothing: that inner volume is left out.
+  // inside the object, where its inner volume proves nothing: that inner volume is left out,
+  // and no region is fully lit.
   LightRegions(const LightOrigin& light, std::span<const BoundingVolumes> volumes);
 
   // fully_lit: lit in the outer tree, so no object lies between p and the light; unlit:
@@ -61,9 +62,13 @@ public:
 
 private:
   LightRegions(const LightOrigin& light, const std::vector<BeamPolygon>& outer_faces,
-               const std::vector<BeamPolygon>& inner_faces);
+               const std::vector<BeamPolygon>& inner_faces, bool surrounded);
 
   double epsilon_;
+  // A point light inside an object's outer volume: the outer tree's lit side
+  // then includes the box around the light, where the object may stand between
+  // a point and the light, so nothing is proved fully lit.
+  bool surrounded_;
   BeamTree outer_, inner_;
 };
 

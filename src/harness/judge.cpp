@@ -81,6 +81,24 @@ std::string bad_value(const Image& image) {
   return {};
 }
 
+Verdict judge_reference(const Image& reference, const std::vector<glm::ivec2>& pixels,
+                        const std::vector<glm::dvec3>& brute_force) {
+  float peak = 0.0f;
+  for (const auto& p : reference.pixels) peak = std::max(peak, largest_channel(p));
+  Verdict v{"brute force", "worst_pixel", 0.0, reference_bound, true, ""};
+  for (size_t k = 0; k < pixels.size(); ++k) {
+    const glm::dvec3 r(reference.at(pixels[k].x, pixels[k].y)), b = brute_force[k];
+    const double scale = std::max({b.r, b.g, b.b, reference_floor * peak, absolute_floor});
+    const double e = std::max({std::abs(r.r - b.r), std::abs(r.g - b.g), std::abs(r.b - b.b)}) / scale;
+    if (e <= v.value) continue;
+    v.value = e;
+    v.pass = e <= reference_bound;
+    v.detail = v.pass ? "" : pixel_text(pixels[k].x, pixels[k].y) + ": reference " + number(std::max({r.r, r.g, r.b})) +
+                                 " against brute force " + number(std::max({b.r, b.g, b.b})) + ", error " + number(e);
+  }
+  return v;
+}
+
 Verdict judge_defaults(const Image& method, const Image& reference) {
   Verdict finite = value_check("defaults", method);
   if (!finite.pass) return finite;

@@ -5,7 +5,9 @@
 #include <airlight/image.hpp>
 #include <airlight/method.hpp>
 
+#include <glm/vec2.hpp>
 #include <string>
+#include <vector>
 
 namespace airlight::harness {
 
@@ -54,6 +56,16 @@ WorstPixel worst_pixel(const Image& method, const Image& reference);
 
 // The image has a NaN, an infinity or a negative value: what and where, else empty.
 std::string bad_value(const Image& image);
+
+// The reference against brute force (reference/brute_force.hpp) at a few
+// pixels: the largest channel error over the largest brute-force channel, each
+// pixel's denominator at least reference_floor of the image's maximum. 2e-3:
+// the reference integrates each light to a relative 1e-3 (its rel_tol) on float
+// rays; the brute force is good to 1e-9, so twice that is a fault, not noise.
+inline constexpr double reference_bound = 2e-3;
+inline constexpr double reference_floor = 1e-3;
+Verdict judge_reference(const Image& reference, const std::vector<glm::ivec2>& pixels,
+                        const std::vector<glm::dvec3>& brute_force);
 
 // At the defaults: finite and non-negative, and either zero where the
 // reference is (a scene without lights) or within default_rel_rmse.

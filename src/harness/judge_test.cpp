@@ -87,5 +87,20 @@ TEST(Judge, TrialsUseTheirMeasureAndBound) {
   EXPECT_TRUE(judge_trial(rmse, method, flat(1.0f)).pass);  // 0.03/√12 overall
 }
 
+TEST(Judge, TheReferenceAgainstBruteForceAtItsPixels) {
+  Image reference = flat(1.0f);
+  reference.at(1, 1) = glm::vec3(2.0f);
+  const std::vector<glm::ivec2> pixels{{1, 1}, {0, 0}};
+  EXPECT_TRUE(judge_reference(reference, pixels, {glm::dvec3(2.0), glm::dvec3(1.001)}).pass);
+  const Verdict v = judge_reference(reference, pixels, {glm::dvec3(2.0), glm::dvec3(1.01)});
+  EXPECT_FALSE(v.pass);
+  EXPECT_EQ(v.detail, "pixel (0, 0): reference 1 against brute force 1.01, error 0.009901");
+  // A dark pixel is judged against a thousandth of the image's maximum (0.002):
+  // 2e-6 off is 1e-3 of that, not 100 % of itself.
+  reference.at(2, 2) = glm::vec3(0.0f);
+  EXPECT_TRUE(judge_reference(reference, {{2, 2}}, {glm::dvec3(2e-6)}).pass);
+  EXPECT_FALSE(judge_reference(reference, {{2, 2}}, {glm::dvec3(1e-5)}).pass);  // 5e-3 of it
+}
+
 }  // namespace
 }  // namespace airlight::harness

@@ -1,5 +1,6 @@
 #include "harness/run.hpp"
 
+#include "reference/brute_force.hpp"
 #include "reference/reference.hpp"
 
 #include <airlight/error.hpp>
@@ -22,8 +23,6 @@ const Trial* find_trial(const MethodInfo& method, const std::string& name) {
   throw InputError("--trial", name, "is not a trial of " + method.name);
 }
 
-bool fails(const Verdict& v) { return !v.pass; }
-
 // Drops the elements of `list` one at a time, each for good when the scene without it still fails.
 template <class T, class Fails>
 void drop_while_failing(Scene& scene, std::vector<T> Scene::*list, const Fails& still_fails) {
@@ -32,6 +31,21 @@ void drop_while_failing(Scene& scene, std::vector<T> Scene::*list, const Fails& 
     (smaller.*list).erase((smaller.*list).begin() + static_cast<long>(i));
     if (still_fails(smaller)) scene = std::move(smaller);
   }
+}
+
+// Where the reference is checked against brute force: its brightest pixel (a
+// light's image, a shaft's core), the middle, and two more on the diagonals.
+std::vector<glm::ivec2> checked_pixels(const Image& reference) {
+  glm::ivec2 brightest(0);
+  float peak = -1.0f;
+  for (int y = 0; y < reference.height; ++y)
+    for (int x = 0; x < reference.width; ++x)
+      if (const glm::vec3 p = reference.at(x, y); p.r + p.g + p.b > peak) {
+        peak = p.r + p.g + p.b;
+        brightest = {x, y};
+      }
+  const int w = reference.width, h = reference.height;
+  return {brightest, {w / 2, h / 2}, {w / 4, h / 4}, {3 * w / 4, 3 * h / 4}};
 }
 
 }  // namespace
@@ -69,6 +83,12 @@ Outcome Harness::judge(const Scene& scene) const {
   outcome.reference_mean = mean(full);
   outcome.visible = judged(scene, full);
   if (!outcome.visible) return outcome;
+  const std::vector<glm::ivec2> pixels = checked_pixels(full);
+  const auto start = std::chrono::steady_clock::now();
+  Judgement brute{"reference", judge_reference(full, pixels, reference::brute_force_airlight(
+                                                                 scene, width_, height_, pixels)), 0.0};
+  brute.seconds = seconds_since(start);
+  outcome.judgements.push_back(std::move(brute));
   for (const MethodInfo* method : methods_) {
     const Image own = judged_scene(scene, method->capabilities).name == scene.name ? full
                                                                                 : reference(scene, method->capabilities);

@@ -13,6 +13,8 @@
 
 namespace airlight::harness {
 
+inline bool fails(const Verdict& v) { return !v.pass; }
+
 struct Judgement {
   std::string method;
   Verdict verdict;
