@@ -6,6 +6,7 @@
 #include <airlight/error.hpp>
 
 #include <chrono>
+#include <map>
 #include <exception>
 
 namespace airlight::harness {
@@ -89,14 +90,17 @@ Outcome Harness::judge(const Scene& scene) const {
                                                                  scene, width_, height_, pixels)), 0.0};
   brute.seconds = seconds_since(start);
   outcome.judgements.push_back(std::move(brute));
+  // One reference per scene judged: judged_scene names each by what it took out.
+  std::map<std::string, Image> references{{scene.name, full}};
   for (const MethodInfo* method : methods_) {
-    const Image own = judged_scene(scene, method->capabilities).name == scene.name ? full
-                                                                                : reference(scene, method->capabilities);
+    const Scene judged_by = judged_scene(scene, method->capabilities);
+    auto [own, fresh] = references.try_emplace(judged_by.name);
+    if (fresh) own->second = reference::render(judged_by, width_, height_).airlight;
     std::vector<const Trial*> trials{nullptr};
     for (const Trial& t : method->trials) trials.push_back(&t);
     for (const Trial* t : trials) {
       Judgement j{method->name, {}, 0.0};
-      j.verdict = judge(scene, *method, t, own, &j.seconds);
+      j.verdict = judge(scene, *method, t, own->second, &j.seconds);
       outcome.judgements.push_back(std::move(j));
     }
   }
