@@ -3,6 +3,7 @@
 #include <airlight/error.hpp>
 
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <unordered_map>
 
@@ -129,6 +130,11 @@ Query make_query(GLenum target) {
   GLuint id = 0;
   glCreateQueries(target, 1, &id);
   return Query(id);
+}
+
+bool software_renderer() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer && std::strstr(renderer, "llvmpipe");
 }
 
 }  // namespace airlight::gpu

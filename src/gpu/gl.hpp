@@ -57,6 +57,12 @@ using Sampler = Object<detail::delete_sampler>;
 using Program = Object<detail::delete_program>;
 using Shader = Object<detail::delete_shader>;
 
+// Whether the context is Mesa's llvmpipe: its timer queries miss compute work,
+// and it ends an invocation's loops after LP_MAX_TGSI_LOOP_ITERATIONS (65535)
+// iterations summed over them all (docs/decisions.md, Numerics).
+bool software_renderer();
+inline constexpr int software_loop_limit = 65535;
+
 // The largest buffer and texture airlight makes. No GL query tells them: Mesa
 // keeps a buffer's size in 32 bits, and llvmpipe refuses a texture of 2 GiB or
 // more (docs/decisions.md "Memory for settings"). Past them make_buffer and

@@ -1,15 +1,6 @@
 #include "gpu/timer.hpp"
 
-#include <cstring>
-
 namespace airlight::gpu {
-
-namespace {
-bool software_renderer() {
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return renderer && std::strstr(renderer, "llvmpipe");
-}
-}  // namespace
 
 PassTimer::PassTimer() : wall_clock_(software_renderer()) {}
 

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
 namespace airlight::harness {
 
 namespace {
@@ -18,13 +21,30 @@ std::string number(double v) {
 
 float largest_channel(const glm::vec3& p) { return std::max({p.r, p.g, p.b}); }
 
+// How far outside the reference's bracket `value` lies, per channel.
+glm::vec3 outside(const glm::vec3& value, const Reference& reference, size_t i) {
+  return glm::max(glm::max(value - reference.high.pixels[i], reference.low.pixels[i] - value), glm::vec3(0.0f));
+}
+
+float peak_of(const Image& image) {
+  float peak = 0.0f;
+  for (const auto& p : image.pixels) peak = std::max(peak, largest_channel(p));
+  return peak;
+}
+
+std::string against(const Reference& r, int x, int y) {
+  const float c = largest_channel(r.centre.at(x, y)), lo = largest_channel(r.low.at(x, y)),
+              hi = largest_channel(r.high.at(x, y));
+  return number(c) + (lo == hi ? "" : " (" + number(lo) + " to " + number(hi) + " near the pixel's centre)");
+}
+
 // Finite and non-negative come first: a NaN would pass any bound it is compared with.
 Verdict value_check(const std::string& trial, const Image& method) {
   const std::string bad = bad_value(method);
   return {trial, "finite", 0.0, 0.0, bad.empty(), bad};
 }
 
-Verdict rel_rmse_verdict(const std::string& trial, const Image& method, const Image& reference, double bound) {
+Verdict rel_rmse_verdict(const std::string& trial, const Image& method, const Reference& reference, double bound) {
   const double e = rel_rmse(method, reference);
   return {trial, "rel_rmse", e, bound, e <= bound, e <= bound ? "" : "rRMSE " + number(e) + " > " + number(bound)};
 }
@@ -41,29 +61,38 @@ bool judged(const Scene& scene, const Image& reference) {
   return scene.lights.empty() || mean(reference) >= visible_mean;
 }
 
-double rel_rmse(const Image& method, const Image& reference) {
-  double squared = 0.0, sum = 0.0;
-  for (size_t i = 0; i < reference.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(method.pixels[i][c]) - reference.pixels[i][c];
-      squared += d * d;
-      sum += reference.pixels[i][c];
+Reference bracket(const std::vector<Image>& images) {
+  Reference r{images.at(0), images[0], images[0]};
+  for (const Image& shifted : images)
+    for (size_t i = 0; i < r.centre.pixels.size(); ++i) {
+      r.low.pixels[i] = glm::min(r.low.pixels[i], shifted.pixels.at(i));
+      r.high.pixels[i] = glm::max(r.high.pixels[i], shifted.pixels[i]);
     }
-  const double n = 3.0 * static_cast<double>(reference.pixels.size());
+  return r;
+}
+
+double rel_rmse(const Image& method, const Reference& reference) {
+  double squared = 0.0, sum = 0.0;
+  const std::vector<glm::vec3>& centre = reference.centre.pixels;
+  for (size_t i = 0; i < centre.size(); ++i) {
+    const glm::dvec3 d(outside(method.pixels[i], reference, i));
+    squared += glm::dot(d, d);
+    sum += double(centre[i].r) + centre[i].g + centre[i].b;
+  }
+  const double n = 3.0 * static_cast<double>(centre.size());
   return std::sqrt(squared / n) / std::max(sum / n, absolute_floor);
 }
 
-WorstPixel worst_pixel(const Image& method, const Image& reference) {
-  float peak = 0.0f;
-  for (const auto& p : reference.pixels) peak = std::max(peak, largest_channel(p));
-  const double judged = std::max(judged_share * peak, absolute_floor);
+WorstPixel worst_pixel(const Image& method, const Reference& reference) {
+  const Image& centre = reference.centre;
+  const double judged = std::max(judged_share * peak_of(centre), absolute_floor);
   WorstPixel worst;
-  for (int y = 0; y < reference.height; ++y)
-    for (int x = 0; x < reference.width; ++x) {
-      const double r = largest_channel(reference.at(x, y));
+  for (int y = 0; y < centre.height; ++y)
+    for (int x = 0; x < centre.width; ++x) {
+      const double r = largest_channel(centre.at(x, y));
       if (r < judged) continue;
-      const glm::vec3 d = glm::abs(method.at(x, y) - reference.at(x, y));
-      const double e = largest_channel(d) / r;
+      const size_t i = static_cast<size_t>(y) * static_cast<size_t>(centre.width) + static_cast<size_t>(x);
+      const double e = largest_channel(outside(method.at(x, y), reference, i)) / r;
       if (e > worst.error || worst.x < 0) worst = {e, x, y};
     }
   return worst;
@@ -83,8 +112,7 @@ std::string bad_value(const Image& image) {
 
 Verdict judge_reference(const Image& reference, const std::vector<glm::ivec2>& pixels,
                         const std::vector<glm::dvec3>& brute_force) {
-  float peak = 0.0f;
-  for (const auto& p : reference.pixels) peak = std::max(peak, largest_channel(p));
+  const float peak = peak_of(reference);
   Verdict v{"brute force", "worst_pixel", 0.0, reference_bound, true, ""};
   for (size_t k = 0; k < pixels.size(); ++k) {
     const glm::dvec3 r(reference.at(pixels[k].x, pixels[k].y)), b = brute_force[k];
@@ -99,19 +127,17 @@ Verdict judge_reference(const Image& reference, const std::vector<glm::ivec2>& p
   return v;
 }
 
-Verdict judge_defaults(const Image& method, const Image& reference) {
+Verdict judge_defaults(const Image& method, const Reference& reference) {
   Verdict finite = value_check("defaults", method);
   if (!finite.pass) return finite;
-  float peak = 0.0f, method_peak = 0.0f;
-  for (const auto& p : reference.pixels) peak = std::max(peak, largest_channel(p));
-  for (const auto& p : method.pixels) method_peak = std::max(method_peak, largest_channel(p));
-  if (peak == 0.0f)  // no light reaches the fog: any airlight is made up
+  const float method_peak = peak_of(method);
+  if (peak_of(reference.high) == 0.0f)  // no light reaches the fog: any airlight is made up
     return {"defaults", "zero", method_peak, 0.0, method_peak == 0.0f,
             method_peak == 0.0f ? "" : "airlight " + number(method_peak) + " where the reference has none"};
   return rel_rmse_verdict("defaults", method, reference, default_rel_rmse);
 }
 
-Verdict judge_trial(const Trial& trial, const Image& method, const Image& reference) {
+Verdict judge_trial(const Trial& trial, const Image& method, const Reference& reference) {
   Verdict finite = value_check(trial.name, method);
   if (!finite.pass) return finite;
   if (trial.measure == Trial::Measure::rel_rmse) return rel_rmse_verdict(trial.name, method, reference, trial.bound);
@@ -120,7 +146,7 @@ Verdict judge_trial(const Trial& trial, const Image& method, const Image& refere
   std::string detail;
   if (!pass)
     detail = pixel_text(w.x, w.y) + ": " + number(largest_channel(method.at(w.x, w.y))) + " against " +
-             number(largest_channel(reference.at(w.x, w.y))) + ", error " + number(w.error) + " > " + number(trial.bound);
+             against(reference, w.x, w.y) + ", error " + number(w.error) + " > " + number(trial.bound);
   return {trial.name, "worst_pixel", w.error, trial.bound, pass, detail};
 }
 

@@ -30,6 +30,23 @@ inline constexpr double default_rel_rmse = 0.10;
 // The share of the image's maximum above which worst_pixel judges a pixel.
 inline constexpr double judged_share = 0.01;
 
+// The reference's value at each pixel, bracketed. A rasterizer samples a pixel
+// on a grid of 1/256 pixel (8 subpixel bits, llvmpipe and GPUs alike) and a
+// method rebuilds its view ray in float, so where so small a shift changes the
+// value — a silhouette, a light's image — a method may rightly give anything
+// the pixel holds near its centre. `centre` is the reference through the
+// pixel's centre; `low` and `high` the least and greatest per channel of it and
+// of four rays bracket_shift beside it (twice that grid). A method's error
+// at a pixel is its distance outside [low, high]; its scale is `centre`.
+inline constexpr double bracket_shift = 1.0 / 128.0;
+struct Reference {
+  Image centre, low, high;
+};
+// `images`: the centre's first, then those shifted (reference::Settings::subpixel).
+Reference bracket(const std::vector<Image>& images);
+// A reference known exactly at each pixel (hand-made images, tests).
+inline Reference exactly(const Image& image) { return {image, image, image}; }
+
 struct Verdict {
   std::string trial;    // "defaults" or the trial's name
   std::string measure;  // "rel_rmse", "worst_pixel", "finite", "zero"
@@ -45,14 +62,14 @@ double mean(const Image& image);
 // its fog is visible (mean ≥ visible_mean).
 bool judged(const Scene& scene, const Image& reference);
 
-double rel_rmse(const Image& method, const Image& reference);
+double rel_rmse(const Image& method, const Reference& reference);
 // The largest relative error among the pixels whose largest reference channel
 // reaches judged_share of the image's maximum (and absolute_floor); its pixel.
 struct WorstPixel {
   double error = 0.0;
   int x = -1, y = -1;
 };
-WorstPixel worst_pixel(const Image& method, const Image& reference);
+WorstPixel worst_pixel(const Image& method, const Reference& reference);
 
 // The image has a NaN, an infinity or a negative value: what and where, else empty.
 std::string bad_value(const Image& image);
@@ -69,8 +86,8 @@ Verdict judge_reference(const Image& reference, const std::vector<glm::ivec2>& p
 
 // At the defaults: finite and non-negative, and either zero where the
 // reference is (a scene without lights) or within default_rel_rmse.
-Verdict judge_defaults(const Image& method, const Image& reference);
+Verdict judge_defaults(const Image& method, const Reference& reference);
 // A trial: finite and non-negative, then its measure within its bound.
-Verdict judge_trial(const Trial& trial, const Image& method, const Image& reference);
+Verdict judge_trial(const Trial& trial, const Image& method, const Reference& reference);
 
 }  // namespace airlight::harness

@@ -15,12 +15,12 @@ Image flat(float value) { return Image(4, 3, glm::vec3(value)); }
 TEST(Judge, RelRmseIsTheRootMeanSquareOverTheMean) {
   Image method = flat(1.0f);
   method.at(0, 0) = glm::vec3(1.0f + std::sqrt(12.0f));  // one pixel of 12 off by √12: RMSE 1
-  EXPECT_NEAR(rel_rmse(method, flat(1.0f)), 1.0, 1e-6);
-  EXPECT_NEAR(rel_rmse(flat(1.0f), flat(2.0f)), 0.5, 1e-6);  // RMSE 1 over a mean of 2
+  EXPECT_NEAR(rel_rmse(method, exactly(flat(1.0f))), 1.0, 1e-6);
+  EXPECT_NEAR(rel_rmse(flat(1.0f), exactly(flat(2.0f))), 0.5, 1e-6);  // RMSE 1 over a mean of 2
 }
 
 TEST(Judge, RelRmseOfABlackReferenceDividesByTheFloor) {
-  EXPECT_NEAR(rel_rmse(flat(1e-7f), flat(0.0f)), 1e-7 / absolute_floor, 1e-6);
+  EXPECT_NEAR(rel_rmse(flat(1e-7f), exactly(flat(0.0f))), 1e-7 / absolute_floor, 1e-6);
 }
 
 TEST(Judge, WorstPixelSkipsPixelsBelowOnePercentOfTheMaximum) {
@@ -29,7 +29,7 @@ TEST(Judge, WorstPixelSkipsPixelsBelowOnePercentOfTheMaximum) {
   method.at(1, 1) = glm::vec3(5.0f);
   reference.at(2, 1) = glm::vec3(0.011f);  // above it: judged by its own value
   method.at(2, 1) = glm::vec3(0.011f * 1.5f);
-  const WorstPixel w = worst_pixel(method, reference);
+  const WorstPixel w = worst_pixel(method, exactly(reference));
   EXPECT_EQ(w.x, 2);
   EXPECT_EQ(w.y, 1);
   EXPECT_NEAR(w.error, 0.5, 1e-5);
@@ -37,7 +37,7 @@ TEST(Judge, WorstPixelSkipsPixelsBelowOnePercentOfTheMaximum) {
 
 TEST(Judge, WorstPixelTakesTheLargestChannelErrorOverTheLargestChannel) {
   Image reference(1, 1, glm::vec3(1.0f, 0.1f, 0.1f)), method(1, 1, glm::vec3(1.0f, 0.1f, 0.13f));
-  EXPECT_NEAR(worst_pixel(method, reference).error, 0.03, 1e-6);  // 0.03 of the red, not 30 % of the blue
+  EXPECT_NEAR(worst_pixel(method, exactly(reference)).error, 0.03, 1e-6);  // 0.03 of the red, not 30 % of the blue
 }
 
 TEST(Judge, BadValuesAreNamedWithTheirPixel) {
@@ -52,16 +52,16 @@ TEST(Judge, BadValuesAreNamedWithTheirPixel) {
 }
 
 TEST(Judge, DefaultsWithinTenPercent) {
-  EXPECT_TRUE(judge_defaults(flat(1.09f), flat(1.0f)).pass);
-  const Verdict v = judge_defaults(flat(1.11f), flat(1.0f));
+  EXPECT_TRUE(judge_defaults(flat(1.09f), exactly(flat(1.0f))).pass);
+  const Verdict v = judge_defaults(flat(1.11f), exactly(flat(1.0f)));
   EXPECT_FALSE(v.pass);
   EXPECT_EQ(v.measure, "rel_rmse");
   EXPECT_EQ(v.detail, "rRMSE 0.11 > 0.1");
 }
 
 TEST(Judge, WithoutLightsOnlyZeroPasses) {
-  EXPECT_TRUE(judge_defaults(flat(0.0f), flat(0.0f)).pass);
-  const Verdict v = judge_defaults(flat(1e-9f), flat(0.0f));
+  EXPECT_TRUE(judge_defaults(flat(0.0f), exactly(flat(0.0f))).pass);
+  const Verdict v = judge_defaults(flat(1e-9f), exactly(flat(0.0f)));
   EXPECT_FALSE(v.pass);
   EXPECT_EQ(v.detail, "airlight 1e-09 where the reference has none");
 }
@@ -70,7 +70,7 @@ TEST(Judge, ANanFailsBeforeAnyMeasure) {
   Image method = flat(1.0f);
   method.at(0, 0).r = std::numeric_limits<float>::quiet_NaN();
   const Trial trial{"exact", {}, Trial::Measure::worst_pixel, 0.02, "test"};
-  const Verdict v = judge_trial(trial, method, flat(1.0f));
+  const Verdict v = judge_trial(trial, method, exactly(flat(1.0f)));
   EXPECT_FALSE(v.pass);
   EXPECT_EQ(v.measure, "finite");
   EXPECT_EQ(v.trial, "exact");
@@ -80,11 +80,33 @@ TEST(Judge, TrialsUseTheirMeasureAndBound) {
   const Trial worst{"exact", {}, Trial::Measure::worst_pixel, 0.02, "test"};
   Image method = flat(1.0f);
   method.at(2, 2) = glm::vec3(1.03f);
-  const Verdict v = judge_trial(worst, method, flat(1.0f));
+  const Verdict v = judge_trial(worst, method, exactly(flat(1.0f)));
   EXPECT_FALSE(v.pass);
   EXPECT_EQ(v.detail, "pixel (2, 2): 1.03 against 1, error 0.03 > 0.02");
   const Trial rmse{"high quality", {}, Trial::Measure::rel_rmse, 0.03, "test"};
-  EXPECT_TRUE(judge_trial(rmse, method, flat(1.0f)).pass);  // 0.03/√12 overall
+  EXPECT_TRUE(judge_trial(rmse, method, exactly(flat(1.0f))).pass);  // 0.03/√12 overall
+}
+
+// A silhouette crossing a pixel close to its centre: the shifted rays see 0.2
+// or 1.2 where the centre's sees 1; a method may give either, and is judged
+// by how far it lies outside them, over the centre's value.
+TEST(Judge, APixelIsJudgedByItsBracket) {
+  Image shifted_low = flat(1.0f), shifted_high = flat(1.0f);
+  shifted_low.at(1, 1) = glm::vec3(0.2f);
+  shifted_high.at(1, 1) = glm::vec3(1.2f);
+  const Reference r = bracket({flat(1.0f), shifted_low, flat(1.0f), shifted_high});
+  EXPECT_EQ(r.centre.at(1, 1), glm::vec3(1.0f));
+  EXPECT_EQ(r.low.at(1, 1), glm::vec3(0.2f));
+  EXPECT_EQ(r.high.at(1, 1), glm::vec3(1.2f));
+  Image method = flat(1.0f);
+  method.at(1, 1) = glm::vec3(0.25f);
+  EXPECT_EQ(worst_pixel(method, r).error, 0.0);
+  EXPECT_EQ(rel_rmse(method, r), 0.0);
+  method.at(1, 1) = glm::vec3(1.5f);  // 0.3 above the bracket, over the centre's 1
+  EXPECT_NEAR(worst_pixel(method, r).error, 0.3, 1e-6);
+  const Trial worst{"exact", {}, Trial::Measure::worst_pixel, 0.02, "test"};
+  EXPECT_EQ(judge_trial(worst, method, r).detail,
+            "pixel (1, 1): 1.5 against 1 (0.2 to 1.2 near the pixel's centre), error 0.3 > 0.02");
 }
 
 TEST(Judge, TheReferenceAgainstBruteForceAtItsPixels) {

@@ -54,11 +54,16 @@ std::vector<glm::ivec2> checked_pixels(const Image& reference) {
 Harness::Harness(std::vector<const MethodInfo*> methods, int width, int height)
     : methods_(std::move(methods)), width_(width), height_(height) {}
 
-Image Harness::reference(const Scene& scene, const Capabilities& capabilities) const {
-  return reference::render(judged_scene(scene, capabilities), width_, height_).airlight;
+Reference Harness::reference(const Scene& scene, const Capabilities& capabilities) const {
+  const Scene judged_by = judged_scene(scene, capabilities);
+  std::vector<Image> images;
+  for (const glm::dvec2 shift : {glm::dvec2(0.0), {bracket_shift, 0.0}, {-bracket_shift, 0.0}, {0.0, bracket_shift},
+                                 {0.0, -bracket_shift}})
+    images.push_back(reference::render(judged_by, width_, height_, {.subpixel = glm::dvec2(0.5) + shift}).airlight);
+  return bracket(images);
 }
 
-Verdict Harness::judge(const Scene& scene, const MethodInfo& method, const Trial* trial, const Image& reference,
+Verdict Harness::judge(const Scene& scene, const MethodInfo& method, const Trial* trial, const Reference& reference,
                        double* seconds) const {
   const std::string name = trial ? trial->name : "defaults";
   const auto start = std::chrono::steady_clock::now();
@@ -80,22 +85,22 @@ Verdict Harness::judge(const Scene& scene, const MethodInfo& method, const Trial
 
 Outcome Harness::judge(const Scene& scene) const {
   Outcome outcome;
-  const Image full = reference(scene, {});
-  outcome.reference_mean = mean(full);
-  outcome.visible = judged(scene, full);
+  const Reference full = reference(scene, {});
+  outcome.reference_mean = mean(full.centre);
+  outcome.visible = judged(scene, full.centre);
   if (!outcome.visible) return outcome;
-  const std::vector<glm::ivec2> pixels = checked_pixels(full);
+  const std::vector<glm::ivec2> pixels = checked_pixels(full.centre);
   const auto start = std::chrono::steady_clock::now();
-  Judgement brute{"reference", judge_reference(full, pixels, reference::brute_force_airlight(
+  Judgement brute{"reference", judge_reference(full.centre, pixels, reference::brute_force_airlight(
                                                                  scene, width_, height_, pixels)), 0.0};
   brute.seconds = seconds_since(start);
   outcome.judgements.push_back(std::move(brute));
   // One reference per scene judged: judged_scene names each by what it took out.
-  std::map<std::string, Image> references{{scene.name, full}};
+  std::map<std::string, Reference> references{{scene.name, full}};
   for (const MethodInfo* method : methods_) {
     const Scene judged_by = judged_scene(scene, method->capabilities);
     auto [own, fresh] = references.try_emplace(judged_by.name);
-    if (fresh) own->second = reference::render(judged_by, width_, height_).airlight;
+    if (fresh) own->second = reference(scene, method->capabilities);
     std::vector<const Trial*> trials{nullptr};
     for (const Trial& t : method->trials) trials.push_back(&t);
     for (const Trial* t : trials) {
@@ -117,8 +122,8 @@ Verdict Harness::judge(const Scene& scene, const MethodInfo& method, const std::
 Scene Harness::shrink(Scene scene, const MethodInfo& method, const std::string& trial) const {
   const Trial* t = find_trial(method, trial);
   const auto still_fails = [&](const Scene& s) {
-    const Image r = reference(s, method.capabilities);
-    return judged(s, r) && fails(judge(s, method, t, r, nullptr));
+    const Reference r = reference(s, method.capabilities);
+    return judged(s, r.centre) && fails(judge(s, method, t, r, nullptr));
   };
   drop_while_failing(scene, &Scene::lights, still_fails);
   drop_while_failing(scene, &Scene::meshes, still_fails);

@@ -40,8 +40,8 @@ public:
   Scene shrink(Scene scene, const MethodInfo& method, const std::string& trial) const;
 
 private:
-  Image reference(const Scene& scene, const Capabilities& capabilities) const;
-  Verdict judge(const Scene& scene, const MethodInfo& method, const Trial* trial, const Image& reference,
+  Reference reference(const Scene& scene, const Capabilities& capabilities) const;
+  Verdict judge(const Scene& scene, const MethodInfo& method, const Trial* trial, const Reference& reference,
                 double* seconds) const;
 
   std::vector<const MethodInfo*> methods_;

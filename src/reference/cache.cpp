@@ -153,7 +153,7 @@ CachedReference render_reference(const Scene& scene, int width, int height, cons
 
 std::string reference_key(const Scene& scene, int width, int height, const Settings& settings) {
   Hasher h;
-  h.add(std::string_view("airlight-reference/4"));  // bump when the reference's output or the key changes
+  h.add(std::string_view("airlight-reference/5"));  // bump when the reference's output or the key changes
   add(h, scene.camera);
   for (const auto& c : {scene.medium.sigma_s, scene.medium.sigma_a}) h.add(c);
   add(h, scene.medium.phase);
@@ -168,6 +168,8 @@ std::string reference_key(const Scene& scene, int width, int height, const Setti
   h.add(height);
   h.add(settings.rel_tol);
   h.add(settings.min_segments);
+  h.add(settings.subpixel.x);
+  h.add(settings.subpixel.y);
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.value()));
   return hex;

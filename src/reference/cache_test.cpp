@@ -84,6 +84,7 @@ TEST(ReferenceCache, KeyChangesWithTheScenesContentSizeAndSettings) {
   EXPECT_EQ(reference_key(scene, 16, 12, Settings{}), key);
   EXPECT_NE(reference_key(scene, 16, 12, {.min_segments = 256}), key);
   EXPECT_NE(reference_key(scene, 16, 12, {.rel_tol = 1e-4}), key);
+  EXPECT_NE(reference_key(scene, 16, 12, {.subpixel = {0.5, 0.52}}), key);
 
   Scene lobe = spot_over_floor();
   lobe.medium.phase.lobes[0].g = 0.3f;

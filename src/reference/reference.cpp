@@ -184,7 +184,8 @@ void render_tile(const Context& c, const TileGrid& grid, int tile, Images& frame
   const int x0 = tile % grid.columns * tile_size, y0 = tile / grid.columns * tile_size;
   for (int j = y0; j < std::min(y0 + tile_size, grid.height); ++j)
     for (int i = x0; i < std::min(x0 + tile_size, grid.width); ++i) {
-      const optics::Ray ray = geometry::primary_ray(c.scene.camera, grid.width, grid.height, i + 0.5, j + 0.5);
+      const optics::Ray ray = geometry::primary_ray(c.scene.camera, grid.width, grid.height, i + c.settings.subpixel.x,
+                                                          j + c.settings.subpixel.y);
       const Radiance radiance = trace(c, ray, count);
       frame.surface.at(i, j) = to_pixel(radiance.surface, count);
       frame.airlight.at(i, j) = to_pixel(radiance.airlight, count);

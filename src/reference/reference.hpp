@@ -8,6 +8,8 @@
 #include <airlight/scene.hpp>
 #include <atomic>
 
+#include <glm/vec2.hpp>
+
 namespace airlight::reference {
 
 struct Settings {
@@ -16,6 +18,10 @@ struct Settings {
   // 128 keeps every built-in within 3e-4 of brute force at 64×48, where 32 lost
   // whole lit gaps (docs/decisions.md "The reference checked by brute force").
   int min_segments = 128;
+  // Where in each pixel its ray passes, in pixels from its corner: the centre,
+  // as a rasterizer samples. The random scenes' harness moves it to bracket the
+  // pixel's value where a subpixel shift changes it (an edge, a light's image).
+  glm::dvec2 subpixel{0.5, 0.5};
 };
 
 struct Images {

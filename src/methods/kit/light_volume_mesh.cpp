@@ -79,11 +79,6 @@ void dispatch_items(const gpu::Program& program, GLuint first, GLuint count) {
   glMemoryBarrier(GL_ALL_BARRIER_BITS);  // the next pass reads it, or clears or rewrites what it read
 }
 
-bool software_renderer() {
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return renderer && std::strstr(renderer, "llvmpipe");
-}
-
 }  // namespace
 
 std::vector<SettingSpec> light_volume_settings(int default_resolution) {
@@ -102,7 +97,7 @@ void LightVolumeMesh::prepare() {
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
   max_records_ = static_cast<GLsizei>(std::max<GLint64>((block - align) / record_bytes, 1));
-  wall_clock_ = software_renderer();
+  wall_clock_ = gpu::software_renderer();
   if (!wall_clock_) {
     started_ = gpu::make_query(GL_TIMESTAMP);
     finished_ = gpu::make_query(GL_TIMESTAMP);

@@ -9,10 +9,15 @@
 // without a light map's colours; the ray is cut into pieces inside fixed sets
 // of media (unoccluded_airlight), and each lit interval's Γ is multiplied by a
 // ratio estimated at SAMPLES (a setting) points of the interval
+// (correction_samples)
 // (interval_correction), docs/decisions.md. A shader calls cut_into_pieces
 // (scene.glsl) once per pixel before lit_gamma.
 #include "methods/kit/closed_form.glsl"
 #include "methods/kit/equiangular.glsl"
+
+// Points per lit interval for interval_correction: SAMPLES, unless the pixel's
+// shader lowers it to stay within llvmpipe's loop limit (lit_intervals.comp.glsl).
+int correction_samples = SAMPLES;
 
 // light_map without the gobo: the spot's cone factor, or 1 inside a beam.
 float light_shape(int i, vec3 x) {
@@ -61,8 +66,8 @@ vec3 interval_correction(int i, vec3 eye, vec3 dir, float a, float b) {
   Segment s = light_types[i] == LIGHT_DIRECTIONAL ? uniform_segment(lit.x, lit.y)
                                                   : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
   vec3 exact = vec3(0.0), modelled = vec3(0.0);
-  for (int k = 0; k < SAMPLES; ++k) {
-    vec2 t = segment_sample(s, (float(k) + 0.5) / float(SAMPLES), SAMPLES);
+  for (int k = 0; k < correction_samples; ++k) {
+    vec2 t = segment_sample(s, (float(k) + 0.5) / float(correction_samples), correction_samples);
     vec3 x = eye + t.x * dir;
     vec3 f = inscatter_unmapped(i, x, dir, eye_leg_depth(eye, x)) * t.y;
     exact += f * light_map(i, x);

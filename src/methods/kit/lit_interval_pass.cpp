@@ -1,5 +1,6 @@
 #include "methods/kit/lit_interval_pass.hpp"
 
+#include "core/warning.hpp"
 #include "gpu/program.hpp"
 
 #include <algorithm>
@@ -126,7 +127,7 @@ double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, c
 
 void LitIntervalPass::prepare() {
   counted_draw_.prepare();
-  node_count_ = gpu::make_buffer(2 * sizeof(GLuint), nullptr);
+  node_count_ = gpu::make_buffer(3 * sizeof(GLuint), nullptr);  // CountBlock
 }
 
 std::string lit_interval_defines() {
@@ -135,7 +136,9 @@ std::string lit_interval_defines() {
 }
 
 std::string LitIntervalPass::defines() const {
-  return lit_interval_defines() + "#define SAMPLES " + std::to_string(samples_) + "\n";
+  std::string d = lit_interval_defines() + "#define SAMPLES " + std::to_string(samples_) + "\n";
+  if (gpu::software_renderer()) d += "#define LOOP_LIMIT " + std::to_string(gpu::software_loop_limit) + "\n";
+  return d;
 }
 
 void LitIntervalPass::allocate_pool(size_t nodes) {
@@ -213,13 +216,26 @@ void LitIntervalPass::resolve(const SceneFrame& frame, const std::vector<int>& e
   gpu::set_uniform(program, "eye_counts", eye_counts);
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  const bool limited = gpu::software_renderer();
+  loop_limited_ = 0;
+  if (limited) glNamedBufferSubData(node_count_.id(), 2 * sizeof(GLuint), sizeof(GLuint), &loop_limited_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
   gpu::dispatch_pixels(frame.width(), frame.height());
+  if (!limited) return;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(node_count_.id(), 2 * sizeof(GLuint), sizeof(GLuint), &loop_limited_);
+  if (loop_limited_ > 0)
+    warn("samples", std::to_string(loop_limited_) + " pixels' lit intervals were cut short by llvmpipe's limit of " +
+                        std::to_string(gpu::software_loop_limit) +
+                        " loop iterations per pixel: too many crossings per view ray (a finer light volume, more "
+                        "casters in view)");
 }
 
 std::vector<std::pair<std::string, double>> LitIntervalPass::stats() const {
   return {{"crossings", static_cast<double>(crossings_)},
           {"fragments", fragments_},
-          {"redraws", static_cast<double>(redraws_)}};
+          {"redraws", static_cast<double>(redraws_)},
+          {"loop_limited", static_cast<double>(loop_limited_)}};
 }
 
 }  // namespace airlight::kit

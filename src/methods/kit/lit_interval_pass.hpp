@@ -87,8 +87,8 @@ public:
            const std::vector<int>& eye_counts, const gpu::Texture& target, gpu::PassTimer& timer);
 
   // crossings (drawn into the lists), fragments (shaded by the last draw of
-  // the triangles; 0 without pipeline statistics) and redraws (the pool grown
-  // this frame).
+  // the triangles; 0 without pipeline statistics), redraws (the pool grown
+  // this frame) and loop_limited (pixels llvmpipe's loop limit cut short).
   std::vector<std::pair<std::string, double>> stats() const;
 
 private:
@@ -108,6 +108,7 @@ private:
   unsigned crossings_ = 0;
   double fragments_ = 0.0;
   int redraws_ = 0;
+  GLuint loop_limited_ = 0;
 };
 
 }  // namespace airlight::kit

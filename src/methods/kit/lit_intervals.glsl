@@ -25,6 +25,7 @@ layout(std430, binding = BINDING_NODES) coherent buffer NodeBlock { uint nodes[]
 layout(std430, binding = BINDING_NODE_COUNT) coherent buffer CountBlock {
   uint node_count;     // nodes the crossing pass asked for (more than capacity: it must run again)
   uint node_capacity;  // nodes the pool holds
+  uint loop_limited;   // pixels whose sum llvmpipe's loop limit may have cut short (lit_intervals.comp.glsl)
 };
 
 uint pack_crossing(int light, int change) { return (uint(light) << 16) | uint(change + 32768); }
