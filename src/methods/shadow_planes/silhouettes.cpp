@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec4.hpp>
 
 namespace airlight::methods {
@@ -44,6 +48,38 @@ void Silhouettes::add_planes(const std::vector<geometry::ShadowPlane>& planes, c
   }
 }
 
+// The count changes by ±1 where a path crosses a caster's triangle
+// (geometry/shadow_edges.hpp); a view ray, which ends at the first surface at
+// or past the near plane, crosses triangles only nearer than that: where the
+// near plane cuts a caster, or the eye is inside one (random scene 27: the eye
+// in a box, its count 1, no plane to bring it to 0 outside the box, whose near
+// wall the near plane clipped — every pixel black). Those triangles are
+// counted as the planes are: +1 crossing away from the light. Only triangles
+// whose bounds reach the sphere about the eye that holds the near plane's
+// rectangle can be crossed so; most frames have none.
+void Silhouettes::add_caps(const Caster& caster, const FrameInputs& inputs, const geometry::LightOrigin& light,
+                           int index) {
+  const Camera& camera = inputs.camera;
+  const double tan_y = std::tan(glm::radians(0.5 * double(camera.fov_y_deg)));
+  const double aspect = double(inputs.width) / double(std::max(inputs.height, 1));
+  const double reach = double(camera.near) * std::sqrt(1.0 + tan_y * tan_y * (1.0 + aspect * aspect)) * 1.001;
+  const glm::dvec3 eye(camera.position);
+  for (const glm::uvec3& t : caster.topology.triangles) {
+    const glm::dvec3 a(caster.world[t.x]), b(caster.world[t.y]), c(caster.world[t.z]);
+    const glm::dvec3 nearest = glm::clamp(eye, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
+    if (glm::distance(nearest, eye) > reach) continue;
+    glm::dvec3 n = glm::cross(b - a, c - a);
+    const glm::dvec3 away = light.directional ? glm::dvec3(light.direction) : a - glm::dvec3(light.position);
+    if (glm::dot(n, away) < 0.0) n = -n;
+    const double length = glm::length(n);
+    if (!(length > 0.0)) continue;
+    n /= length;
+    const glm::vec4 plane(glm::vec3(n), static_cast<float>(glm::dot(n, a)));
+    triangles_.push_back({{glm::vec4(glm::vec3(a), 1.0f), glm::vec4(glm::vec3(b), 1.0f), glm::vec4(glm::vec3(c), 1.0f)},
+                          plane, glm::ivec4(index, 1, 0, 0)});
+  }
+}
+
 // Per caster its welded positions moved by the frame's transform, then per
 // light the planes of every caster and the eye's count (Biri §5.1.1: the
 // silhouettes depend on the light and the caster, so both are rebuilt every frame).
@@ -61,6 +97,7 @@ void Silhouettes::build(const FrameInputs& inputs) {
       silhouette_edges_ += s.silhouette_edges;
       boundary_edges_ += s.boundary_edges;
       eye_counts_[i] += geometry::shadow_count(c.topology, c.world, light, inputs.camera.position);
+      add_caps(c, inputs, light, static_cast<int>(i));
     }
     plane_count_ += static_cast<int>(planes_.size());
     add_planes(planes_, inputs.lights[i], static_cast<int>(i));

@@ -2,7 +2,9 @@
 // The shadow planes of every caster and light for one frame (Biri §5.1): each
 // caster welded with its edges' triangles once per scene, and per frame the
 // edges whose weight is not 0 (geometry/shadow_edges.hpp) extruded away from
-// their light to infinity, as the triangles the kit's lit-interval pass counts.
+// their light to infinity, as the triangles the kit's lit-interval pass counts;
+// and the casters' own triangles where a view ray may cross them before it
+// reaches the near plane (add_caps).
 #include "geometry/shadow_edges.hpp"
 #include "methods/kit/lit_interval_pass.hpp"
 
@@ -37,6 +39,7 @@ private:
   };
   void move_casters(const FrameInputs& inputs);
   void add_planes(const std::vector<geometry::ShadowPlane>& planes, const Light& light, int index);
+  void add_caps(const Caster& caster, const FrameInputs& inputs, const geometry::LightOrigin& light, int index);
 
   std::vector<Caster> casters_;
   std::vector<geometry::ShadowPlane> planes_;  // of one light, reused
