@@ -90,11 +90,11 @@ TEST(OutputCheck, SettingsBeyondTheMemoryExitTwoBeforeAnyOpenGl) {
       "the light volume meshes of 1 cube map (6 faces × 6·1024² triangles), 1 spot map (6·1024² triangles and the "
       "sides) and 1 directional map (6·1024² triangles and the sides), 80 bytes a triangle";
   expect_refused("render --builtin three_lights --method light_volume --set volume_resolution=1024" + out,
-                 "--set: volume_resolution=1024: light_volume needs about 4.0 GiB of memory, 3.9 GiB of it for " +
+                 "--set: volume_resolution=1024: light_volume needs about 4.2 GiB of memory, 4.1 GiB of it for " +
                      meshes + ", more than the 1.0 GiB available",
                  memory(1024));
   expect_refused("render --builtin three_lights --method sv_march --set volume_resolution=512" + out,
-                 "--set: volume_resolution=512: sv_march needs about 749 MiB of memory, 713 MiB of it for the shells "
+                 "--set: volume_resolution=512: sv_march needs about 781 MiB of memory, 745 MiB of it for the shells "
                  "of 1 cube map (6 faces × 4·512² triangles), 1 spot map (4·512² triangles and the sides) and 1 "
                  "directional map (4·512² triangles and the sides), 80 bytes a triangle, more than the 512 MiB "
                  "available",
@@ -120,15 +120,15 @@ TEST(OutputCheck, SettingsBeyondTheMemoryExitTwoBeforeAnyOpenGl) {
                  "the 64 MiB available",
                  memory(64));
   // compare, bench and view check the same, compare and bench with the method's name in front.
-  const std::string qualified = "--set: light_volume.volume_resolution=1024: light_volume needs about 4.0 GiB of "
-                                "memory, 3.9 GiB of it for " + meshes + ", more than the 1.0 GiB available";
+  const std::string qualified = "--set: light_volume.volume_resolution=1024: light_volume needs about 4.2 GiB of "
+                                "memory, 4.1 GiB of it for " + meshes + ", more than the 1.0 GiB available";
   expect_refused("compare --builtin three_lights --methods raymarch,light_volume:volume_resolution=1024" + out,
                  qualified, memory(1024));
   expect_refused("bench --builtin three_lights --methods light_volume --sweep light_volume.volume_resolution=64,1024 "
                  "--sizes 64x48 --csv " + (work_dir() / "big.csv").string(),
                  qualified, memory(1024));
   expect_refused("view --builtin three_lights --method light_volume --set volume_resolution=1024 --size 64x48",
-                 "--set: volume_resolution=1024: light_volume needs about 4.0 GiB of memory, 3.9 GiB of it for " +
+                 "--set: volume_resolution=1024: light_volume needs about 4.2 GiB of memory, 4.1 GiB of it for " +
                      meshes + ", more than the 1.0 GiB available",
                  memory(1024));
   EXPECT_FALSE(fs::exists(work_dir() / "big.png"));
@@ -180,12 +180,12 @@ TEST(OutputCheck, AnOutOfMemoryThatStillHappensNamesTheSetting) {
     return Outcome{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, "", read_text(work_dir() / "oom.txt")};
   };
   if (run("list scenes").status != 0) GTEST_SKIP() << "this build cannot start in 1.1 GB of address space";
-  // 6·2048² triangles of 80 bytes: a 1.9 GiB buffer.
+  // 6·2048² triangles of 80 bytes: a 1.9 GiB buffer (and their indices when drawn).
   const Outcome o = run("render --builtin teapot_spot --method light_volume --set volume_resolution=2048 --set "
                         "shadow_resolution=2048 --size 32x24 --out " + (work_dir() / "oom.pfm").string());
   EXPECT_EQ(o.status, 1) << o.err;
   EXPECT_EQ(o.err.rfind("airlight: failure: out of memory (GL_OUT_OF_MEMORY) in render:", 0), 0u) << o.err;
-  EXPECT_NE(o.err.find("2.0 GiB of it for the light volume meshes of 1 spot map (6·2048² triangles and the sides), 80 "
+  EXPECT_NE(o.err.find("2.1 GiB of it for the light volume meshes of 1 spot map (6·2048² triangles and the sides), 80 "
                        "bytes a triangle: the setting most likely responsible is volume_resolution=2048"),
             std::string::npos)
       << o.err;

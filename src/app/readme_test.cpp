@@ -116,7 +116,7 @@ const std::map<std::string, Example>& examples() {
       {"airlight: error: --size: 16384x16384: needs about 40.0 GiB of memory (raymarch: 160 bytes per pixel), more "
        "than the 21.5 GiB available",
        {{}, "render --builtin teapot_spot --method raymarch --size 16384x16384 --out x.png"}},
-      {"airlight: error: --set: volume_resolution=4096: light_volume needs about 8.1 GiB of memory, 8.0 GiB of it for "
+      {"airlight: error: --set: volume_resolution=4096: light_volume needs about 8.5 GiB of memory, 8.4 GiB of it for "
        "the light volume meshes of 1 spot map (6·4096² triangles and the sides), 80 bytes a triangle, more than the "
        "1.0 GiB available",
        {{},

@@ -25,6 +25,11 @@
 #include "methods/kit/scene.glsl"
 #include "methods/kit/lit_intervals.glsl"
 
+#ifdef KEPT_TRIANGLES
+// The triangles CountedDraw kept (cull_counted.comp.glsl), by index.
+layout(std430, binding = BINDING_KEPT) readonly buffer KeptBlock { uint kept[]; };
+#endif
+
 flat out int triangle;
 flat out int exact;  // 1: the fragment tests its ray against the triangle
 
@@ -97,7 +102,11 @@ vec2 enclosing_corner(vec2 part[MAX_PART], int n, int k) {
 }
 
 void main() {
-  triangle = gl_VertexID / 3;
+#ifdef KEPT_TRIANGLES
+  triangle = int(kept[gl_VertexID / 3]);
+#else
+  triangle = gl_VertexID / 3;  // every triangle drawn (beam_volumes' signed sum: blending adds in draw order)
+#endif
   int k = gl_VertexID % 3;
   vec4 clip[3];
   bool at_infinity = false, in_front = true;

@@ -346,7 +346,8 @@ std::vector<MemoryNeed> light_volume_mesh_needs(const Scene& scene, const Settin
   return {{"volume_resolution",
            std::string(shell ? "the shells of " : "the light volume meshes of ") + listed(meshes) + ", " +
                std::to_string(record_bytes) + " bytes a triangle",
-           buffer + grid, buffer, layers * (r + 1.0) * (r + 1.0) * 16.0}};
+           buffer + grid + triangles * sizeof(GLuint),  // and the kept indices (CountedDraw)
+           buffer, layers * (r + 1.0) * (r + 1.0) * 16.0}};
 }
 
 }  // namespace airlight::kit

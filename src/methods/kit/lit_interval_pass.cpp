@@ -14,6 +14,7 @@ namespace {
 constexpr GLuint counted_binding = binding::first_free_storage;
 constexpr GLuint nodes_binding = counted_binding + 1;
 constexpr GLuint node_count_binding = counted_binding + 2;
+constexpr GLuint kept_binding = counted_binding + 3, kept_draw_binding = counted_binding + 4;  // CountedDraw's
 constexpr GLuint end_of_list = 0xffffffffu;
 constexpr size_t node_bytes = 3 * sizeof(GLuint);
 
@@ -64,7 +65,7 @@ std::vector<MemoryNeed> crossing_pool_needs(const Settings& settings, int width,
 
 MemoryNeed counted_triangle_need(const std::string& what, double count) {
   const double buffer = count * sizeof(CountedTriangle);
-  return {"", what, 2.0 * buffer, buffer};
+  return {"", what, 2.0 * buffer + count * sizeof(GLuint), buffer};  // and the kept indices (CountedDraw)
 }
 
 LitIntervalPass::LitIntervalPass(const Settings& s)
@@ -73,6 +74,8 @@ LitIntervalPass::LitIntervalPass(const Settings& s)
 void CountedDraw::prepare() {
   fbo_ = gpu::make_framebuffer();
   no_vertices_ = gpu::make_vertex_array();  // the triangles come from their buffer by gl_VertexID
+  kept_draw_ = gpu::make_buffer(4 * sizeof(GLuint), nullptr);
+  kept_capacity_ = 0;
   // A storage binding holds at most GL_MAX_SHADER_STORAGE_BLOCK_SIZE bytes
   // (128 MiB on llvmpipe: 1.68 M triangles); larger sets are drawn in ranges
   // whose offsets keep the binding's alignment.
@@ -87,6 +90,27 @@ void CountedDraw::prepare() {
     glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
     invocations_ = gpu::Query(id);
   }
+}
+
+// The bound range's triangles that may cross a pixel's ray, into kept_ and the
+// indirect draw's count (cull_counted.comp.glsl).
+void CountedDraw::keep_crossing(const SceneFrame& frame, size_t n) {
+  if (n > kept_capacity_) {
+    kept_capacity_ = n;
+    kept_ = gpu::make_buffer(n * sizeof(GLuint), nullptr);
+  }
+  const GLuint command[4] = {0, 1, 0, 0};  // vertex count, instances, first vertex, base instance
+  glNamedBufferSubData(kept_draw_.id(), 0, sizeof(command), command);
+  const gpu::Program& cull =
+      gpu::cached_compute_program("methods/kit/cull_counted.comp.glsl", frame.defines() + lit_interval_defines());
+  glUseProgram(cull.id());
+  gpu::set_uniform(cull, "item_count", static_cast<int>(n));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kept_binding, kept_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kept_draw_binding, kept_draw_.id());
+  const GLuint groups = static_cast<GLuint>((n + 63) / 64), x = std::min<GLuint>(groups, 65535u);
+  glDispatchCompute(x, (groups + x - 1) / x, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, kept_draw_.id());
 }
 
 double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, const gpu::Buffer& triangles,
@@ -112,8 +136,11 @@ double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, c
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles.id(),
                       static_cast<GLintptr>(first * sizeof(CountedTriangle)),
                       static_cast<GLsizeiptr>(n * sizeof(CountedTriangle)));
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * n));
+    keep_crossing(frame, n);
+    glUseProgram(program.id());
+    glDrawArraysIndirect(GL_TRIANGLES, nullptr);
   }
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   GLuint64 fragments = 0;
   if (invocations_) {
     glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
@@ -132,7 +159,9 @@ void LitIntervalPass::prepare() {
 
 std::string lit_interval_defines() {
   return "#define BINDING_COUNTED " + std::to_string(counted_binding) + "\n#define BINDING_NODES " +
-         std::to_string(nodes_binding) + "\n#define BINDING_NODE_COUNT " + std::to_string(node_count_binding) + "\n";
+         std::to_string(nodes_binding) + "\n#define BINDING_NODE_COUNT " + std::to_string(node_count_binding) +
+         "\n#define BINDING_KEPT " + std::to_string(kept_binding) + "\n#define BINDING_KEPT_DRAW " +
+         std::to_string(kept_draw_binding) + "\n";
 }
 
 std::string LitIntervalPass::defines() const {
@@ -200,7 +229,7 @@ void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles
   crossings_ = 0;
   const gpu::Program& program = gpu::cached_program(
       {{GL_VERTEX_SHADER, "methods/kit/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/crossings.frag.glsl"}},
-      frame.defines() + defines());
+      frame.defines() + defines() + CountedDraw::defines());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
   glBindImageTexture(0, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);

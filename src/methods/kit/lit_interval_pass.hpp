@@ -53,10 +53,15 @@ std::string lit_interval_defines();
 // fragment stage of the caller's, over an attachment-less framebuffer of the
 // frame's size: no depth test (a fragment compares its t with the G-buffer
 // distance), no culling (both sides count), no near or far clipping
-// (GL_DEPTH_CLAMP); in ranges no larger than one storage binding holds.
+// (GL_DEPTH_CLAMP); in ranges no larger than one storage binding holds, each
+// range's triangles first culled to those that may cross a pixel's ray
+// (cull_counted.comp.glsl).
 class CountedDraw {
 public:
   void prepare();  // needs a current context
+
+  // What a program of draw's needs on top of the frame's and lit_interval_defines.
+  static std::string defines() { return "#define KEPT_TRIANGLES\n"; }
 
   // Draws records [0, count) of `triangles` with `program` (its vertex stage
   // crossings.vert.glsl, the records at BINDING_COUNTED); returns the fragment
@@ -64,7 +69,11 @@ public:
   double draw(const SceneFrame& frame, const gpu::Program& program, const gpu::Buffer& triangles, size_t count);
 
 private:
+  void keep_crossing(const SceneFrame& frame, size_t n);
+
   size_t range_triangles_ = 1;  // triangles per storage binding
+  gpu::Buffer kept_, kept_draw_;  // the kept triangles' indices; their indirect draw
+  size_t kept_capacity_ = 0;
   gpu::Framebuffer fbo_;
   gpu::VertexArray no_vertices_;
   int width_ = 0, height_ = 0;

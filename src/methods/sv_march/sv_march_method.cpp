@@ -73,7 +73,8 @@ private:
                          layer % 2 == 0 ? &infinity : &zero);
     const gpu::Program& program = gpu::cached_program({{GL_VERTEX_SHADER, "methods/kit/crossings.vert.glsl"},
                                                        {GL_FRAGMENT_SHADER, "methods/sv_march/sv_bounds.frag.glsl"}},
-                                                      frame.defines() + kit::lit_interval_defines());
+                                                      frame.defines() + kit::lit_interval_defines() +
+                                                          kit::CountedDraw::defines());
     glBindImageTexture(0, bounds_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
     fragments_ = draw_.draw(frame, program, shell_.triangles(), shell_.triangle_count());
   }
