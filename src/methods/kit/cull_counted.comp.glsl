@@ -7,9 +7,13 @@
 // box around its projection: a ray crosses a triangle only through its
 // projection, and the vertex stage grows triangles by that margin, no more,
 // for the rasterizer's sake. Edge-on triangles are dropped too (the vertex
-// stage covers nothing for them). Corners at infinity, behind the eye or
-// beyond SAFE pixels (where float positions are coarser than a thousandth of
-// a pixel) keep their triangle. The kept ones' indices are appended, and the
+// stage covers nothing for them). Any triangle, its corners at infinity or
+// not, is dropped when all its corners lie on the outer side of one plane of
+// the view's frustum in clip space — behind the eye (w ≤ 0: a ray meets
+// nothing at t ≤ 0) or beyond a side, which every pixel centre is inside —
+// since the triangle is their positive combinations. Other corners at
+// infinity, behind the eye or beyond SAFE pixels (where float positions are
+// coarser than a thousandth of a pixel) keep their triangle. The kept ones' indices are appended, and the
 // draw's vertex count with them (an indirect draw: no wait for the count).
 #include "methods/kit/scene.glsl"
 #include "methods/kit/lit_intervals.glsl"
@@ -33,12 +37,19 @@ bool holds_centre(float lo, float hi, float size) {
 }
 
 bool may_cross_a_ray(CountedTriangle c) {
-  vec2 s[3];
+  vec4 clip[3];
+  bvec4 beyond = bvec4(true);  // all corners beyond the side x = w, x = −w, y = w, y = −w
+  bool behind = true, projected = true;
   for (int i = 0; i < 3; ++i) {
-    vec4 clip = frame.view_projection * c.corners[i];
-    if (c.corners[i].w == 0.0 || !(clip.w > 0.0)) return true;
-    s[i] = 0.5 * frame.size * clip.xy / clip.w;
+    clip[i] = frame.view_projection * c.corners[i];
+    beyond = bvec4(ivec4(beyond) & ivec4(greaterThan(vec4(clip[i].x, -clip[i].x, clip[i].y, -clip[i].y), vec4(clip[i].w))));
+    behind = behind && !(clip[i].w > 0.0);
+    projected = projected && c.corners[i].w != 0.0 && clip[i].w > 0.0;
   }
+  if (behind || any(beyond)) return false;
+  if (!projected) return true;
+  vec2 s[3];
+  for (int i = 0; i < 3; ++i) s[i] = 0.5 * frame.size * clip[i].xy / clip[i].w;
   vec2 lo = min(min(s[0], s[1]), s[2]), hi = max(max(s[0], s[1]), s[2]);
   if (!(max(max(abs(lo.x), abs(lo.y)), max(abs(hi.x), abs(hi.y))) <= SAFE)) return true;
   vec2 e1 = s[1] - s[0], e2 = s[2] - s[0];
