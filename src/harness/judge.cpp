@@ -71,6 +71,23 @@ Reference bracket(const std::vector<Image>& images) {
   return r;
 }
 
+std::vector<bool> sharp_pixels(const Image& centre) {
+  std::vector<bool> sharp(centre.pixels.size(), false);
+  for (int y = 0; y < centre.height; ++y)
+    for (int x = 0; x < centre.width; ++x) {
+      const double c = largest_channel(centre.at(x, y));
+      bool edge = false;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= centre.width || ny >= centre.height) continue;
+          edge = edge || std::abs(largest_channel(centre.at(nx, ny)) - c) > bracket_sharpness * c;
+        }
+      sharp[static_cast<size_t>(y * centre.width + x)] = edge;
+    }
+  return sharp;
+}
+
 double rel_rmse(const Image& method, const Reference& reference) {
   double squared = 0.0, sum = 0.0;
   const std::vector<glm::vec3>& centre = reference.centre.pixels;

@@ -109,6 +109,21 @@ TEST(Judge, APixelIsJudgedByItsBracket) {
             "pixel (1, 1): 1.5 against 1 (0.2 to 1.2 near the pixel's centre), error 0.3 > 0.02");
 }
 
+// Shifted rays are traced where a neighbour differs by more than an eighth:
+// the step's two sides, not the smooth rest.
+TEST(Judge, SharpPixelsAreThoseBesideAStep) {
+  Image centre = flat(1.0f);
+  centre.at(0, 0) = glm::vec3(1.1f);  // a tenth: smooth
+  centre.at(3, 2) = glm::vec3(2.0f);  // a step
+  const std::vector<bool> sharp = sharp_pixels(centre);
+  const auto at = [&](int x, int y) { return bool(sharp[static_cast<size_t>(y * 4 + x)]); };
+  EXPECT_FALSE(at(0, 0));
+  EXPECT_FALSE(at(1, 1));
+  EXPECT_TRUE(at(3, 2));
+  EXPECT_TRUE(at(2, 1));  // beside it: 1 against 2
+  EXPECT_FALSE(at(1, 0));
+}
+
 TEST(Judge, TheReferenceAgainstBruteForceAtItsPixels) {
   Image reference = flat(1.0f);
   reference.at(1, 1) = glm::vec3(2.0f);

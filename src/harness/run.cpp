@@ -56,10 +56,16 @@ Harness::Harness(std::vector<const MethodInfo*> methods, int width, int height)
 
 Reference Harness::reference(const Scene& scene, const Capabilities& capabilities) const {
   const Scene judged_by = judged_scene(scene, capabilities);
-  std::vector<Image> images;
-  for (const glm::dvec2 shift : {glm::dvec2(0.0), {bracket_shift, 0.0}, {-bracket_shift, 0.0}, {0.0, bracket_shift},
-                                 {0.0, -bracket_shift}})
-    images.push_back(reference::render(judged_by, width_, height_, {.subpixel = glm::dvec2(0.5) + shift}).airlight);
+  std::vector<Image> images{reference::render(judged_by, width_, height_).airlight};
+  const std::vector<bool> sharp = sharp_pixels(images[0]);
+  for (const glm::dvec2 shift : {glm::dvec2(bracket_shift, 0.0), {-bracket_shift, 0.0}, {0.0, bracket_shift},
+                                 {0.0, -bracket_shift}}) {
+    Image shifted =
+        reference::render(judged_by, width_, height_, {.subpixel = glm::dvec2(0.5) + shift, .pixels = sharp}).airlight;
+    for (size_t i = 0; i < sharp.size(); ++i)
+      if (!sharp[i]) shifted.pixels[i] = images[0].pixels[i];  // smooth there: the centre's value
+    images.push_back(std::move(shifted));
+  }
   return bracket(images);
 }
 

@@ -184,6 +184,7 @@ void render_tile(const Context& c, const TileGrid& grid, int tile, Images& frame
   const int x0 = tile % grid.columns * tile_size, y0 = tile / grid.columns * tile_size;
   for (int j = y0; j < std::min(y0 + tile_size, grid.height); ++j)
     for (int i = x0; i < std::min(x0 + tile_size, grid.width); ++i) {
+      if (!c.settings.pixels.empty() && !c.settings.pixels[static_cast<size_t>(j * grid.width + i)]) continue;
       const optics::Ray ray = geometry::primary_ray(c.scene.camera, grid.width, grid.height, i + c.settings.subpixel.x,
                                                           j + c.settings.subpixel.y);
       const Radiance radiance = trace(c, ray, count);
@@ -197,6 +198,8 @@ void render_tile(const Context& c, const TileGrid& grid, int tile, Images& frame
 
 Images render(const Scene& scene, int width, int height, const Settings& settings, Control* control) {
   if (width <= 0 || height <= 0) throw Failure("reference: the image size must be positive");
+  if (!settings.pixels.empty() && settings.pixels.size() != static_cast<size_t>(width) * height)
+    throw Failure("reference: the pixels to render do not match the image's size");
   const RayCaster rays(scene);
   const Context context{scene, rays, settings};
   const TileGrid grid(width, height);

@@ -7,6 +7,7 @@
 #include <airlight/image.hpp>
 #include <airlight/scene.hpp>
 #include <atomic>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -22,6 +23,8 @@ struct Settings {
   // as a rasterizer samples. The random scenes' harness moves it to bracket the
   // pixel's value where a subpixel shift changes it (an edge, a light's image).
   glm::dvec2 subpixel{0.5, 0.5};
+  // Which pixels to render, row by row (the rest are left 0); empty: all.
+  std::vector<bool> pixels{};
 };
 
 struct Images {

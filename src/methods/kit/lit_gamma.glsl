@@ -15,8 +15,8 @@
 #include "methods/kit/closed_form.glsl"
 #include "methods/kit/equiangular.glsl"
 
-// Points per lit interval for interval_correction: SAMPLES, unless the pixel's
-// shader lowers it to stay within llvmpipe's loop limit (lit_intervals.comp.glsl).
+// Points per lit interval for interval_correction: SAMPLES, unless a pixel
+// cannot fit one interval within llvmpipe's loop limit (lit_intervals.comp.glsl).
 int correction_samples = SAMPLES;
 
 // light_map without the gobo: the spot's cone factor, or 1 inside a beam.

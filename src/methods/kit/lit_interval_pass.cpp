@@ -154,7 +154,7 @@ double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, c
 
 void LitIntervalPass::prepare() {
   counted_draw_.prepare();
-  node_count_ = gpu::make_buffer(3 * sizeof(GLuint), nullptr);  // CountBlock
+  node_count_ = gpu::make_buffer(4 * sizeof(GLuint), nullptr);  // CountBlock
 }
 
 std::string lit_interval_defines() {
@@ -242,29 +242,61 @@ void LitIntervalPass::resolve(const SceneFrame& frame, const std::vector<int>& e
       gpu::cached_compute_program("methods/kit/lit_intervals.comp.glsl", frame.defines() + defines());
   glUseProgram(program.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
-  gpu::set_uniform(program, "eye_counts", eye_counts);
-  glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-  const bool limited = gpu::software_renderer();
-  loop_limited_ = 0;
-  if (limited) glNamedBufferSubData(node_count_.id(), 2 * sizeof(GLuint), sizeof(GLuint), &loop_limited_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
-  gpu::dispatch_pixels(frame.width(), frame.height());
-  if (!limited) return;
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(node_count_.id(), 2 * sizeof(GLuint), sizeof(GLuint), &loop_limited_);
+  gpu::set_uniform(program, "eye_counts", eye_counts);
+  loop_limited_ = 0;
+  passes_ = 1;
+  if (!gpu::software_renderer()) {
+    glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    gpu::dispatch_pixels(frame.width(), frame.height());
+    return;
+  }
+  resolve_in_passes(frame, program, target);
+}
+
+// llvmpipe: passes while some pixel is unfinished (lit_intervals.comp.glsl,
+// LOOP_LIMIT); each one sums at least one more interval of every such pixel or
+// lowers its samples, so they end; max_passes only bounds a runaway.
+void LitIntervalPass::resolve_in_passes(const SceneFrame& frame, const gpu::Program& program,
+                                        const gpu::Texture& target) {
+  constexpr int max_passes = 4096;
+  if (!progress_ || progress_size_ != glm::ivec2(frame.width(), frame.height())) {
+    progress_size_ = {frame.width(), frame.height()};
+    progress_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, frame.width(), frame.height());
+  }
+  glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindImageTexture(2, progress_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  const GLuint zeros[2] = {0, 0};  // loop_limited, unfinished
+  glNamedBufferSubData(node_count_.id(), 2 * sizeof(GLuint), sizeof(zeros), zeros);
+  for (passes_ = 1;; ++passes_) {
+    gpu::set_uniform(program, "resume", passes_ - 1);
+    gpu::dispatch_pixels(frame.width(), frame.height());
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    GLuint counts[2] = {0, 0};
+    glGetNamedBufferSubData(node_count_.id(), 2 * sizeof(GLuint), sizeof(counts), counts);
+    loop_limited_ = counts[0];
+    if (counts[1] == 0) break;
+    if (passes_ == max_passes) {
+      loop_limited_ += counts[1];
+      break;
+    }
+    glNamedBufferSubData(node_count_.id(), 3 * sizeof(GLuint), sizeof(GLuint), &zeros[1]);
+  }
   if (loop_limited_ > 0)
     warn("samples", std::to_string(loop_limited_) + " pixels' lit intervals were cut short by llvmpipe's limit of " +
                         std::to_string(gpu::software_loop_limit) +
-                        " loop iterations per pixel: too many crossings per view ray (a finer light volume, more "
-                        "casters in view)");
+                        " loop iterations per pixel, after " + std::to_string(passes_) +
+                        " passes: too many crossings per view ray (a finer light volume, more casters in view)");
 }
 
 std::vector<std::pair<std::string, double>> LitIntervalPass::stats() const {
   return {{"crossings", static_cast<double>(crossings_)},
           {"fragments", fragments_},
           {"redraws", static_cast<double>(redraws_)},
-          {"loop_limited", static_cast<double>(loop_limited_)}};
+          {"loop_limited", static_cast<double>(loop_limited_)},
+          {"passes", static_cast<double>(passes_)}};
 }
 
 }  // namespace airlight::kit

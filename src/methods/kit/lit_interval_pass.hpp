@@ -12,6 +12,7 @@
 #include <airlight/method.hpp>
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 #include <string>
 #include <utility>
@@ -97,13 +98,15 @@ public:
 
   // crossings (drawn into the lists), fragments (shaded by the last draw of
   // the triangles; 0 without pipeline statistics), redraws (the pool grown
-  // this frame) and loop_limited (pixels llvmpipe's loop limit cut short).
+  // this frame), loop_limited (pixels llvmpipe's loop limit cut short) and
+  // passes (of the resolve: more than one where that limit was met).
   std::vector<std::pair<std::string, double>> stats() const;
 
 private:
   void list_crossings(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
   void draw(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
   void resolve(const SceneFrame& frame, const std::vector<int>& eye_counts, const gpu::Texture& target);
+  void resolve_in_passes(const SceneFrame& frame, const gpu::Program& program, const gpu::Texture& target);
   void allocate_pool(size_t nodes);
   std::string defines() const;
 
@@ -118,6 +121,9 @@ private:
   double fragments_ = 0.0;
   int redraws_ = 0;
   GLuint loop_limited_ = 0;
+  int passes_ = 1;                  // of the resolve (more on llvmpipe where its loop limit bites)
+  gpu::Texture progress_;           // per pixel: intervals summed, or finished (LOOP_LIMIT)
+  glm::ivec2 progress_size_{0};
 };
 
 }  // namespace airlight::kit

@@ -17,8 +17,13 @@
 #include "methods/kit/lit_intervals.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+#ifdef LOOP_LIMIT
+layout(rgba32f, binding = 0) uniform image2D airlight_out;  // passes add to it
+layout(r32ui, binding = 1) uniform uimage2D heads;          // the first pass sorts the lists
+#else
 layout(rgba32f, binding = 0) writeonly uniform image2D airlight_out;
 layout(r32ui, binding = 1) readonly uniform uimage2D heads;
+#endif
 
 uniform int eye_counts[LIGHT_COUNT > 0 ? LIGHT_COUNT : 1];  // each light's count at the eye (GLSL has no empty arrays)
 
@@ -82,82 +87,107 @@ uint next_event(int i, uint node) {
   return node;
 }
 
+// The lit intervals of a pixel's ray, in order over all its lights: `index`
+// counts them, the first `skip` were summed by an earlier pass (LOOP_LIMIT).
+struct Walk {
+  vec3 sum;
+  uint index, skip;
+  bool stopped;  // llvmpipe's loop limit was reached: the rest waits for another pass
+};
+
+#ifdef LOOP_LIMIT
+// llvmpipe ends an invocation's loops once their iterations, summed over all of
+// them (over its SIMD batch of 8 pixels), reach LOOP_LIMIT (docs/decisions.md,
+// Numerics): pixels with many lit intervals, each with its correction's samples
+// and Γ's panels, lost the end of their sum, silently, and no count known in
+// advance bounds the work well. So each interval is checked after it is summed:
+// once the limit is spent every loop ends after one iteration, and a loop of
+// two ends after one. The interval that met the limit is dropped, and the pixel
+// goes on from it in another pass (the host runs passes while any pixel is
+// unfinished); a pixel that cannot fit one interval in a pass runs the rest
+// with an eighth of the samples, twice more, then gives up, counted.
+layout(r32ui, binding = 2) uniform uimage2D progress;  // intervals done | level << 24, or FINISHED
+uniform int resume;  // 0 in the first pass
+const uint FINISHED = 0xffffffffu;
+
+bool loop_limit_reached() {
+  int iterations = 0;
+  for (int k = 0; k < 2 + int(frame.size.x < 0.0); ++k) ++iterations;  // a bound the compiler can't fold
+  return iterations < 2;
+}
+#endif
+
+void add_interval(int i, vec3 dir, float a, float b, inout Walk w) {
+  if (w.stopped || w.index++ < w.skip) return;  // summed by an earlier pass
+  vec3 gamma = lit_gamma(i, frame.eye, dir, a, b);
+#ifdef LOOP_LIMIT
+  if (loop_limit_reached()) {
+    w.stopped = true;
+    --w.index;
+    return;
+  }
+#endif
+  w.sum += gamma;
+}
+
 // Light i along [0, d]: Γ over the stretches where its count is 0 or less.
 // Counts are never below 0 in exact arithmetic (shadow volumes contain a
 // point a non-negative number of times; the lit pyramids of a beam tree do
 // not overlap); where pyramids overlap by their ε-thick planes, a point is in
 // two and the count reads −1, which is lit all the same.
-vec3 light_airlight(int i, uint head, vec3 dir, float d) {
-  vec3 eye = frame.eye;
+void light_airlight(int i, uint head, vec3 dir, float d, inout Walk w) {
   int count = eye_counts[i];
   float start = 0.0;  // where the current lit stretch began (when count <= 0)
-  vec3 sum = vec3(0.0);
-  for (uint node = next_event(i, head); node != END_OF_LIST; node = next_event(i, node_next(node))) {
+  for (uint node = next_event(i, head); node != END_OF_LIST && !w.stopped; node = next_event(i, node_next(node))) {
     float t = node_t(node);
     int after = count + crossing_change(nodes[3u * node + 1u]);
-    if (count <= 0 && after > 0) sum += lit_gamma(i, eye, dir, start, t);
+    if (count <= 0 && after > 0) add_interval(i, dir, start, t, w);
     if (count > 0 && after <= 0) start = t;
     count = after;
   }
-  if (count <= 0) sum += lit_gamma(i, eye, dir, start, d);
-  return sum;
+  if (count <= 0) add_interval(i, dir, start, d, w);
 }
-
-#ifdef LOOP_LIMIT
-// llvmpipe ends an invocation's loops once their iterations, summed over all of
-// them, reach LOOP_LIMIT (docs/decisions.md, Numerics): a pixel with many
-// crossings lost the end of its sum, silently. For n crossings, its sort costs
-// about 2n·log₂n iterations, its walks 2n per light, and each of at most
-// n + lights lit intervals about GAMMA_ITERATIONS per piece for Γ (Biri's
-// panels) and SAMPLE_ITERATIONS per correction sample (the media's and lobes'
-// loops in it), both set from where the limit was seen to bite; the samples
-// per interval are lowered to what fits in 7/8 of the limit. The limit
-// counts a SIMD batch's loops, which run while any of its pixels needs them:
-// n is the longest list of the work group, which holds the batch. Every
-// invocation of the group calls this (barriers).
-const int GAMMA_ITERATIONS = 64, SAMPLE_ITERATIONS = 8;
-shared int longest_list;
-void fit_loop_limit(uint head) {
-  int own = 0;
-  for (uint node = head; node != END_OF_LIST; node = node_next(node)) ++own;
-  if (gl_LocalInvocationIndex == 0u) longest_list = 0;
-  barrier();
-  atomicMax(longest_list, own);
-  barrier();
-  int n = longest_list, intervals = n + LIGHT_COUNT;
-  int left = LOOP_LIMIT / 8 * 7 - n * (2 * (findMSB(n) + 1) + 2 * LIGHT_COUNT + 1) -
-             intervals * GAMMA_ITERATIONS * (2 * VOLUME_COUNT + 1);
-  correction_samples = clamp(left / (intervals * SAMPLE_ITERATIONS), 1, SAMPLES);
-}
-
-// Whether the limit was reached all the same: once it is, every loop ends
-// after one iteration, and this one, of two, would end after one.
-bool loop_limit_reached(uint head) {
-  int iterations = 0;
-  for (int k = 0; k < 2 + int(head == END_OF_LIST - 1u); ++k) ++iterations;  // a bound the compiler can't fold
-  return iterations < 2;
-}
-#endif
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  bool inside = all(lessThan(pixel, frame_size()));
-  uint list = inside ? imageLoad(heads, pixel).r : END_OF_LIST;
+  if (any(greaterThanEqual(pixel, frame_size()))) return;
+  Walk w = Walk(vec3(0.0), 0u, 0u, false);
+  uint list = imageLoad(heads, pixel).r;
 #ifdef LOOP_LIMIT
-  fit_loop_limit(list);
-#endif
-  if (!inside) return;
+  uint state = resume == 0 ? 0u : imageLoad(progress, pixel).r, level = state >> 24;
+  if (state == FINISHED) return;
+  w.skip = state & 0xffffffu;
+  correction_samples = max(SAMPLES >> (3u * level), 1);
+  if (resume == 0) {
+    list = sorted(list);
+    imageStore(heads, pixel, uvec4(list));
+    if (loop_limit_reached()) {  // the sort itself was cut short: its list may have lost nodes
+      imageStore(airlight_out, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+      imageStore(progress, pixel, uvec4(FINISHED));
+      atomicAdd(loop_limited, 1u);
+      return;
+    }
+  }
+#else
   list = sorted(list);
+#endif
   load_scene();
   vec3 dir = pixel_ray(vec2(pixel) + 0.5);
   float d = surface_distance(pixel);
   cut_into_pieces(dir, d);
-  vec3 sum = vec3(0.0);
-#define ADD_LIGHT(i) sum += light_airlight(i, list, dir, d);
+#define ADD_LIGHT(i) light_airlight(i, list, dir, d, w);
   FOR_EACH_LIGHT(ADD_LIGHT)
 #undef ADD_LIGHT
 #ifdef LOOP_LIMIT
-  if (loop_limit_reached(list)) atomicAdd(loop_limited, 1u);
+  vec3 before = resume == 0 ? vec3(0.0) : imageLoad(airlight_out, pixel).rgb;
+  imageStore(airlight_out, pixel, vec4(before + w.sum, 1.0));
+  uint next = FINISHED;
+  if (w.stopped && w.index > w.skip) next = w.index | (level << 24);  // on from the interval that met the limit
+  else if (w.stopped && level < 2u) next = w.skip | ((level + 1u) << 24);  // not one fitted: fewer samples
+  else if (w.stopped) atomicAdd(loop_limited, 1u);  // given up: the rest of the sum is missing
+  if (next != FINISHED) atomicAdd(unfinished, 1u);
+  imageStore(progress, pixel, uvec4(next));
+#else
+  imageStore(airlight_out, pixel, vec4(w.sum, 1.0));
 #endif
-  imageStore(airlight_out, pixel, vec4(sum, 1.0));
 }

@@ -25,7 +25,8 @@ layout(std430, binding = BINDING_NODES) coherent buffer NodeBlock { uint nodes[]
 layout(std430, binding = BINDING_NODE_COUNT) coherent buffer CountBlock {
   uint node_count;     // nodes the crossing pass asked for (more than capacity: it must run again)
   uint node_capacity;  // nodes the pool holds
-  uint loop_limited;   // pixels whose sum llvmpipe's loop limit may have cut short (lit_intervals.comp.glsl)
+  uint loop_limited;   // pixels whose sum llvmpipe's loop limit cut short (lit_intervals.comp.glsl)
+  uint unfinished;     // pixels that go on in another pass of it
 };
 
 uint pack_crossing(int light, int change) { return (uint(light) << 16) | uint(change + 32768); }
