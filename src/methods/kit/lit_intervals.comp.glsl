@@ -104,9 +104,11 @@ struct Walk {
 // once the limit is spent every loop ends after one iteration, and a loop of
 // two ends after one. The interval that met the limit is dropped, and the pixel
 // goes on from it in another pass (the host runs passes while any pixel is
-// unfinished); a pixel that cannot fit one interval in a pass runs the rest
-// with an eighth of the samples, twice more, then gives up, counted.
-layout(r32ui, binding = 2) uniform uimage2D progress;  // intervals done | level << 24, or FINISHED
+// unfinished). A pixel that fits no interval in a pass may owe it to its
+// batch (another pixel's interval spent the limit they share): it tries
+// again, and every fourth such pass halves its samples; with none left to
+// halve it gives up, counted.
+layout(r32ui, binding = 2) uniform uimage2D progress;  // intervals done | passes without one << 24, or FINISHED
 uniform int resume;  // 0 in the first pass
 const uint FINISHED = 0xffffffffu;
 
@@ -154,10 +156,10 @@ void main() {
   Walk w = Walk(vec3(0.0), 0u, 0u, false);
   uint list = imageLoad(heads, pixel).r;
 #ifdef LOOP_LIMIT
-  uint state = resume == 0 ? 0u : imageLoad(progress, pixel).r, level = state >> 24;
+  uint state = resume == 0 ? 0u : imageLoad(progress, pixel).r, misses = state >> 24;
   if (state == FINISHED) return;
   w.skip = state & 0xffffffu;
-  correction_samples = max(SAMPLES >> (3u * level), 1);
+  correction_samples = SAMPLES >> (misses / 4u);
   if (resume == 0) {
     list = sorted(list);
     imageStore(heads, pixel, uvec4(list));
@@ -182,8 +184,8 @@ void main() {
   vec3 before = resume == 0 ? vec3(0.0) : imageLoad(airlight_out, pixel).rgb;
   imageStore(airlight_out, pixel, vec4(before + w.sum, 1.0));
   uint next = FINISHED;
-  if (w.stopped && w.index > w.skip) next = w.index | (level << 24);  // on from the interval that met the limit
-  else if (w.stopped && level < 2u) next = w.skip | ((level + 1u) << 24);  // not one fitted: fewer samples
+  if (w.stopped && w.index > w.skip) next = w.index | (misses << 24);  // on from the interval that met the limit
+  else if (w.stopped && (SAMPLES >> ((misses + 1u) / 4u)) > 0) next = w.skip | ((misses + 1u) << 24);
   else if (w.stopped) atomicAdd(loop_limited, 1u);  // given up: the rest of the sum is missing
   if (next != FINISHED) atomicAdd(unfinished, 1u);
   imageStore(progress, pixel, uvec4(next));
