@@ -9,8 +9,7 @@
 // without a light map's colours; the ray is cut into pieces inside fixed sets
 // of media (unoccluded_airlight), and each lit interval's Γ is multiplied by a
 // ratio estimated at SAMPLES (a setting) points of the interval
-// (correction_samples)
-// (interval_correction), docs/decisions.md. A shader calls cut_into_pieces
+// (interval_correction, correction_samples), docs/decisions.md. A shader calls cut_into_pieces
 // (scene.glsl) once per pixel before lit_gamma.
 #include "methods/kit/closed_form.glsl"
 #include "methods/kit/equiangular.glsl"

@@ -154,6 +154,7 @@ double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, c
 
 void LitIntervalPass::prepare() {
   counted_draw_.prepare();
+  loop_limit_ = gpu::software_renderer();
   node_count_ = gpu::make_buffer(4 * sizeof(GLuint), nullptr);  // CountBlock
 }
 
@@ -166,7 +167,7 @@ std::string lit_interval_defines() {
 
 std::string LitIntervalPass::defines() const {
   std::string d = lit_interval_defines() + "#define SAMPLES " + std::to_string(samples_) + "\n";
-  if (gpu::software_renderer()) d += "#define LOOP_LIMIT " + std::to_string(gpu::software_loop_limit) + "\n";
+  if (loop_limit_) d += "#define LOOP_LIMIT " + std::to_string(gpu::software_loop_limit) + "\n";
   return d;
 }
 
@@ -208,6 +209,7 @@ void LitIntervalPass::list_crossings(const SceneFrame& frame, const gpu::Buffer&
     width_ = frame.width();
     height_ = frame.height();
     heads_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
+    if (loop_limit_) progress_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
   }
   if (nodes_.id() == 0)
     allocate_pool(std::max<size_t>(static_cast<size_t>(double(width_) * height_ * capacity_per_pixel_), 1));
@@ -246,7 +248,7 @@ void LitIntervalPass::resolve(const SceneFrame& frame, const std::vector<int>& e
   gpu::set_uniform(program, "eye_counts", eye_counts);
   loop_limited_ = 0;
   passes_ = 1;
-  if (!gpu::software_renderer()) {
+  if (!loop_limit_) {
     glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     gpu::dispatch_pixels(frame.width(), frame.height());
@@ -261,10 +263,6 @@ void LitIntervalPass::resolve(const SceneFrame& frame, const std::vector<int>& e
 void LitIntervalPass::resolve_in_passes(const SceneFrame& frame, const gpu::Program& program,
                                         const gpu::Texture& target) {
   constexpr int max_passes = 4096;
-  if (!progress_ || progress_size_ != glm::ivec2(frame.width(), frame.height())) {
-    progress_size_ = {frame.width(), frame.height()};
-    progress_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, frame.width(), frame.height());
-  }
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   glBindImageTexture(2, progress_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);

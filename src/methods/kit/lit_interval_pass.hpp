@@ -12,7 +12,6 @@
 #include <airlight/method.hpp>
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
-#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 #include <string>
 #include <utility>
@@ -121,9 +120,9 @@ private:
   double fragments_ = 0.0;
   int redraws_ = 0;
   GLuint loop_limited_ = 0;
+  bool loop_limit_ = false;         // llvmpipe: the resolve runs in passes (LOOP_LIMIT)
   int passes_ = 1;                  // of the resolve (more on llvmpipe where its loop limit bites)
-  gpu::Texture progress_;           // per pixel: intervals summed, or finished (LOOP_LIMIT)
-  glm::ivec2 progress_size_{0};
+  gpu::Texture progress_;           // per pixel: intervals summed, or finished (LOOP_LIMIT), sized with heads_
 };
 
 }  // namespace airlight::kit

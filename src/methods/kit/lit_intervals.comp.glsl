@@ -181,8 +181,8 @@ void main() {
   FOR_EACH_LIGHT(ADD_LIGHT)
 #undef ADD_LIGHT
 #ifdef LOOP_LIMIT
-  vec3 before = resume == 0 ? vec3(0.0) : imageLoad(airlight_out, pixel).rgb;
-  imageStore(airlight_out, pixel, vec4(before + w.sum, 1.0));
+  vec3 earlier = resume == 0 ? vec3(0.0) : imageLoad(airlight_out, pixel).rgb;  // earlier passes' sum
+  imageStore(airlight_out, pixel, vec4(earlier + w.sum, 1.0));
   uint next = FINISHED;
   if (w.stopped && w.index > w.skip) next = w.index | (misses << 24);  // on from the interval that met the limit
   else if (w.stopped && (SAMPLES >> ((misses + 1u) / 4u)) > 0) next = w.skip | ((misses + 1u) << 24);

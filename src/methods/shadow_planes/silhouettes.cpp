@@ -57,13 +57,8 @@ void Silhouettes::add_planes(const std::vector<geometry::ShadowPlane>& planes, c
 // counted as the planes are: +1 crossing away from the light. Only triangles
 // whose bounds reach the sphere about the eye that holds the near plane's
 // rectangle can be crossed so; most frames have none.
-void Silhouettes::add_caps(const Caster& caster, const FrameInputs& inputs, const geometry::LightOrigin& light,
-                           int index) {
-  const Camera& camera = inputs.camera;
-  const double tan_y = std::tan(glm::radians(0.5 * double(camera.fov_y_deg)));
-  const double aspect = double(inputs.width) / double(std::max(inputs.height, 1));
-  const double reach = double(camera.near) * std::sqrt(1.0 + tan_y * tan_y * (1.0 + aspect * aspect)) * 1.001;
-  const glm::dvec3 eye(camera.position);
+void Silhouettes::add_caps(const Caster& caster, const glm::dvec3& eye, double reach,
+                           const geometry::LightOrigin& light, int index) {
   for (const glm::uvec3& t : caster.topology.triangles) {
     const glm::dvec3 a(caster.world[t.x]), b(caster.world[t.y]), c(caster.world[t.z]);
     const glm::dvec3 nearest = glm::clamp(eye, glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
@@ -80,6 +75,17 @@ void Silhouettes::add_caps(const Caster& caster, const FrameInputs& inputs, cons
   }
 }
 
+// How far from the eye the near plane's rectangle reaches (add_caps), a
+// thousandth more for rounding.
+namespace {
+double near_reach(const FrameInputs& inputs) {
+  const Camera& camera = inputs.camera;
+  const double tan_y = std::tan(glm::radians(0.5 * double(camera.fov_y_deg)));
+  const double aspect = double(inputs.width) / double(std::max(inputs.height, 1));
+  return double(camera.near) * std::sqrt(1.0 + tan_y * tan_y * (1.0 + aspect * aspect)) * 1.001;
+}
+}  // namespace
+
 // Per caster its welded positions moved by the frame's transform, then per
 // light the planes of every caster and the eye's count (Biri §5.1.1: the
 // silhouettes depend on the light and the caster, so both are rebuilt every frame).
@@ -89,6 +95,8 @@ void Silhouettes::build(const FrameInputs& inputs) {
   triangles_.clear();
   eye_counts_.assign(inputs.lights.size(), 0);
   plane_count_ = silhouette_edges_ = boundary_edges_ = loops_ = 0;
+  const glm::dvec3 eye(inputs.camera.position);
+  const double reach = near_reach(inputs);
   for (size_t i = 0; i < inputs.lights.size(); ++i) {
     const geometry::LightOrigin light = geometry::light_origin(inputs.lights[i]);
     planes_.clear();
@@ -97,7 +105,7 @@ void Silhouettes::build(const FrameInputs& inputs) {
       silhouette_edges_ += s.silhouette_edges;
       boundary_edges_ += s.boundary_edges;
       eye_counts_[i] += geometry::shadow_count(c.topology, c.world, light, inputs.camera.position);
-      add_caps(c, inputs, light, static_cast<int>(i));
+      add_caps(c, eye, reach, light, static_cast<int>(i));
     }
     plane_count_ += static_cast<int>(planes_.size());
     add_planes(planes_, inputs.lights[i], static_cast<int>(i));

@@ -39,7 +39,8 @@ private:
   };
   void move_casters(const FrameInputs& inputs);
   void add_planes(const std::vector<geometry::ShadowPlane>& planes, const Light& light, int index);
-  void add_caps(const Caster& caster, const FrameInputs& inputs, const geometry::LightOrigin& light, int index);
+  void add_caps(const Caster& caster, const glm::dvec3& eye, double reach, const geometry::LightOrigin& light,
+                int index);
 
   std::vector<Caster> casters_;
   std::vector<geometry::ShadowPlane> planes_;  // of one light, reused
