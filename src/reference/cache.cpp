@@ -171,6 +171,7 @@ std::string reference_key(const Scene& scene, int width, int height, const Setti
   h.add(settings.subpixel.x);
   h.add(settings.subpixel.y);
   for (const bool rendered : settings.pixels) h.add(rendered ? 1 : 0);  // none when all are
+  if (!settings.airlight) h.add(0);                                      // nothing by default
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.value()));
   return hex;

@@ -156,7 +156,7 @@ Radiance trace(const Context& c, const optics::Ray& ray, Counters& count) {
     const SurfacePoint s = surface_point(c.scene, ray, *hit);
     radiance.surface = surface_radiance(c, s, count) * eye_transmittance(c.scene, ray.origin, s.position);
   }
-  radiance.airlight = airlight(c, ray, hit ? hit->t : far, count);
+  if (c.settings.airlight) radiance.airlight = airlight(c, ray, hit ? hit->t : far, count);
   return radiance;
 }
 

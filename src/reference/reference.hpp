@@ -25,6 +25,9 @@ struct Settings {
   glm::dvec2 subpixel{0.5, 0.5};
   // Which pixels to render, row by row (the rest are left 0); empty: all.
   std::vector<bool> pixels{};
+  // false: the surface alone, airlight left 0 (tests of a method's surface pass,
+  // where the airlight's integral is nearly all of the time).
+  bool airlight = true;
 };
 
 struct Images {

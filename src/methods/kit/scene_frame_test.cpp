@@ -153,7 +153,7 @@ double mismatched_fraction(const Image& m, const Image& r) {
 // lit and shadowed through the shadow map's texels; everything else must agree).
 void expect_surface_close(const Scene& scene, double tolerance, double max_mismatched, const char* reason) {
   const Rendered gpu = render_frame(scene);
-  const reference::Images cpu = reference::render(scene, width, height);
+  const reference::Images cpu = reference::render(scene, width, height, {.airlight = false});
   const double error = rel_rmse(gpu.surface, cpu.surface);
   const double mismatched = mismatched_fraction(gpu.surface, cpu.surface);
   std::printf("%s: surface rel. RMSE %.5f (bound %.3f), %.3f%% pixels off by > 1%% (bound %.2f%%)\n",
