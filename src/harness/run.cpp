@@ -69,24 +69,39 @@ Reference Harness::reference(const Scene& scene, const Capabilities& capabilitie
   return bracket(images);
 }
 
+// `method`'s airlight on `scene` with `settings` over its defaults (`origin`
+// names where they come from in messages).
+Image Harness::airlight(const Scene& scene, const MethodInfo& method, const std::vector<std::string>& settings,
+                        const std::string& origin) const {
+  Settings chosen(method.settings);
+  for (const std::string& s : settings) chosen.set(s, origin);
+  auto instance = method.create(chosen);
+  instance->prepare(scene);
+  return render(*instance, scene, width_, height_, false).airlight;
+}
+
 Verdict Harness::judge(const Scene& scene, const MethodInfo& method, const Trial* trial, const Reference& reference,
                        double* seconds) const {
   const std::string name = trial ? trial->name : "defaults";
   const auto start = std::chrono::steady_clock::now();
   Image image;
   try {
-    Settings settings(method.settings);
-    if (trial)
-      for (const std::string& s : trial->settings) settings.set(s, "trial " + trial->name);
-    auto instance = method.create(settings);
-    instance->prepare(scene);
-    image = render(*instance, scene, width_, height_, false).airlight;
+    image = airlight(scene, method, trial ? trial->settings : std::vector<std::string>{}, "trial " + name);
   } catch (const std::exception& e) {  // a valid scene must render: any refusal or failure is the method's defect
     if (seconds) *seconds = seconds_since(start);
     return {name, "renders", 0.0, 0.0, false, e.what()};
   }
   if (seconds) *seconds = seconds_since(start);
-  return trial ? judge_trial(*trial, image, reference) : judge_defaults(image, reference);
+  if (!trial) return judge_defaults(image, reference);
+  if (trial->baseline.method.empty()) return judge_trial(*trial, image, reference);
+  Image baseline;
+  try {
+    baseline = airlight(scene, find_method(trial->baseline.method), trial->baseline.settings,
+                        "trial " + name + "'s baseline");
+  } catch (const std::exception& e) {
+    return {name, "renders", 0.0, 0.0, false, "the baseline " + trial->baseline.method + ": " + e.what()};
+  }
+  return judge_trial(*trial, image, exactly(baseline));
 }
 
 Outcome Harness::judge(const Scene& scene) const {

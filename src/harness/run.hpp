@@ -41,6 +41,8 @@ public:
 
 private:
   Reference reference(const Scene& scene, const Capabilities& capabilities) const;
+  Image airlight(const Scene& scene, const MethodInfo& method, const std::vector<std::string>& settings,
+                 const std::string& origin) const;
   Verdict judge(const Scene& scene, const MethodInfo& method, const Trial* trial, const Reference& reference,
                 double* seconds) const;
 

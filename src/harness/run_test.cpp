@@ -3,6 +3,9 @@
 // stays visible.
 #include "harness/run.hpp"
 
+#include "methods/kit/registry.hpp"
+#include "reference/reference.hpp"
+
 #include <gtest/gtest.h>
 
 namespace airlight::harness {
@@ -25,6 +28,31 @@ MethodInfo dark() {
   info.create = [](const Settings&) { return std::make_unique<Dark>(); };
   return info;
 }
+
+// Half the reference's airlight: off the reference by 50 % in every pixel.
+// Registered (in this test binary only), so that a trial can name it as its baseline.
+class Half final : public Method {
+public:
+  void prepare(const Scene& s) override { scene_ = s; }
+  void render_frame(const FrameInputs& in) override {
+    image_ = reference::render(scene_, in.width, in.height).airlight;
+    for (glm::vec3& p : image_.pixels) p *= 0.5f;
+  }
+  FrameImages read_back() override { return {image_, Image(image_.width, image_.height), {}, 0.0, {}}; }
+
+private:
+  Scene scene_;
+  Image image_;
+};
+
+MethodInfo half() {
+  MethodInfo info;
+  info.name = "half_reference";
+  info.settings = {{"scale", SettingSpec::Type::real, 0.5, 0.5, 0.5, {}, "the one scale it has"}};
+  info.create = [](const Settings&) { return std::make_unique<Half>(); };
+  return info;
+}
+AIRLIGHT_REGISTER_METHOD(99, half);
 
 // Two spots each bright enough alone, a box, a sphere and a volume.
 Scene scene() {
@@ -66,6 +94,26 @@ TEST(Harness, ASceneWithoutLightsIsJudgedAndZeroPasses) {
   ASSERT_EQ(outcome.judgements.size(), 2u);
   EXPECT_TRUE(outcome.judgements[1].verdict.pass);
   EXPECT_EQ(outcome.judgements[1].verdict.measure, "zero");
+}
+
+TEST(Harness, ATrialWithABaselineIsJudgedAgainstTheBaselinesImage) {
+  MethodInfo info = half();
+  info.trials = {{"halved", {}, Trial::Measure::worst_pixel, 1e-6, "the same image", {"half_reference", {}}}};
+  const Harness harness({&info}, 16, 12);
+  const Verdict against_baseline = harness.judge(scene(), info, "halved");
+  EXPECT_TRUE(against_baseline.pass) << against_baseline.detail;
+  EXPECT_EQ(against_baseline.value, 0.0);
+  info.trials[0].baseline = {};
+  // Against the reference, half of it is missing: 0.5 but where the bracket of a
+  // sharp pixel (judge.hpp) spans a little of the gap.
+  const double against_reference = harness.judge(scene(), info, "halved").value;
+  EXPECT_GT(against_reference, 0.49);
+  EXPECT_LE(against_reference, 0.5 + 1e-6);
+  info.trials[0].baseline = {"half_reference", {"scale=2"}};
+  const Verdict bad = harness.judge(scene(), info, "halved");
+  EXPECT_EQ(bad.measure, "renders");
+  EXPECT_NE(bad.detail.find("the baseline half_reference: "), std::string::npos) << bad.detail;
+  EXPECT_NE(bad.detail.find("trial halved's baseline"), std::string::npos) << bad.detail;
 }
 
 TEST(Harness, AnInvisibleSceneIsRejectedUnjudged) {
