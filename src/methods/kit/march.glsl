@@ -224,13 +224,6 @@ vec3 transmitted_length(vec3 k, float a, float b) {
   return exp(-k * a) * (b - a) * fraction;
 }
 
-// What light i's guide integrates over [a, b]: a point or spot light's ∫dx/r²
-// along segment s (segment_measure); a directional light's ∫exp(−k·t)dt, its
-// transmittance through the filling medium, for which sun_decay gives k.
-vec3 guide_measure(int i, Segment s, vec3 k, float a, float b) {
-  return light_types[i] == LIGHT_DIRECTIONAL ? transmitted_length(k, a, b) : vec3(segment_measure(s, a, b));
-}
-
 // A directional light's optical depth gained per metre along the view ray in the
 // filling medium: the eye leg's σt, and inside a beam its light leg's σt·cos
 // (light_leg_depth); 0 under the simplified model.
@@ -239,34 +232,60 @@ vec3 sun_decay(int i, vec3 dir) {
   return frame.medium_sigma_t * (has_beam(i) ? 1.0 + dot(dir, LIGHT(i).direction) : 1.0);
 }
 
-// Per channel, Σ over point and spot lights of I·∫σs(x)·dx/r² over the part of
-// [0, d] each lights, plus Σ over directional lights of E·∫σs(x)·p·T(x)·dx over
-// the part they light, σs(x) the filling medium's plus that of each volume the
-// ray crosses there and T the filling medium's transmittance (docs/design.md
-// §1): L_air without V, gobo and smooth edge, and for point and spot lights
-// without p and extinction. It carries what changes fastest from pixel to
-// pixel — the 1/h peak next to a light, a cone's edge, the length of the ray, a
-// volume's outline and chord — and is 0 where no light reaches. A directional
-// light's scattering angle is the same all along the ray and its transmittance
-// has a closed form, so the gather does not blur a peaked phase seen along it,
-// nor the kink where rays leave a beam's side instead of its end (random scenes
-// 35 and 36: Schlick g = −0.58 and −0.87, optical depth about 1).
+// Four nodes of light i's guide over [a, b]: a phase function's weighted sum at
+// cos θ = c is m·dot(w, p(c)). A point or spot light (segment s about it):
+// with t − foot = h·tan u, dx/r² = du/h and cos θ = −sin u (the light's travel
+// against the view ray, as inscatter_unmapped), so ∫p·dx/r² is 4-point
+// Gauss–Legendre in u, m = 1. A directional light: cos θ is the same all along
+// the ray, and m = ∫exp(−k·t)dt its transmittance (k from sun_decay).
+struct GuideNodes {
+  vec4 c, w;
+  vec3 m;
+};
+GuideNodes guide_nodes(int i, Segment s, vec3 dir, vec3 k, float a, float b) {
+  if (light_types[i] == LIGHT_DIRECTIONAL)
+    return GuideNodes(vec4(dot(-LIGHT(i).direction, dir)), vec4(0.25), transmitted_length(k, a, b));
+  const vec4 x = vec4(-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
+  const vec4 weight = vec4(0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451);
+  float u_a = atan2_accurate(a - s.foot, s.h), u_b = atan2_accurate(b - s.foot, s.h);  // h > 0 (equiangular_segment)
+  vec4 u = mix(vec4(u_a), vec4(u_b), 0.5 * (x + 1.0));
+  return GuideNodes(-sin(u), weight * (0.5 * (u_b - u_a) / s.h), vec3(1.0));
+}
+
+#define GUIDE_PHASES(PHASE, n) vec4(PHASE(n.c.x), PHASE(n.c.y), PHASE(n.c.z), PHASE(n.c.w))
+
+// Per channel, Σ over lights of I·∫σs(x)·p(x)·T(x)·dx/r² over the part of
+// [0, d] each lights (r² = 1 and I the irradiance for a directional light),
+// σs·p the filling medium's plus that of each volume the ray crosses there
+// (docs/design.md §1), and T the filling medium's transmittance for directional
+// lights, 1 for the others: L_air without V, gobo and smooth edge, and without
+// extinction but a directional light's. It carries what changes fastest from
+// pixel to pixel — the 1/h peak next to a light, a cone's edge, the length of
+// the ray, a volume's outline and chord, the phase's peak across the image —
+// and is 0 where no light reaches. Random scenes 35, 36 and 38 (a beam seen
+// along its travel, Schlick g = −0.58 to −0.87, optical depth about 1) and 8
+// (a point light at the image's centre, HG g = −0.78) failed at 32×24 when it
+// left out the phase and the transmittance.
 vec3 light_guide_of(int i, vec3 dir, float d) {
   vec3 eye = frame.eye;
   vec2 lit = lit_interval(i, eye, dir, 0.0, d);
   if (!(lit.y > lit.x)) return vec3(0.0);
   bool sun = light_types[i] == LIGHT_DIRECTIONAL;
   Segment s = sun ? uniform_segment(lit.x, lit.y) : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
-  vec3 k = sun ? sun_decay(i, dir) : vec3(0.0);
   if (simplified_model())  // the filling medium alone, isotropic (scattering)
-    return LIGHT(i).color * frame.medium_sigma_s * guide_measure(i, s, k, lit.x, lit.y);
-  float c = dot(-LIGHT(i).direction, dir);  // a directional light's cos θ (inscatter_unmapped)
-  vec3 guide = frame.medium_sigma_s * (sun ? medium_phase(c) : 1.0) * guide_measure(i, s, k, lit.x, lit.y);
-#define ADD_VOLUME_GUIDE(v)                                                                       \
-  {                                                                                               \
-    vec2 chord = box_overlap(eye, dir, lit.x, lit.y, VOLUME(v).lo, VOLUME(v).hi);                 \
-    if (chord.x < chord.y)                                                                        \
-      guide += VOLUME(v).sigma_s * (sun ? VOLUME_PHASE(v, c) : 1.0) * guide_measure(i, s, k, chord.x, chord.y); \
+    return LIGHT(i).color * frame.medium_sigma_s * segment_measure(s, lit.x, lit.y);
+  vec3 k = sun ? sun_decay(i, dir) : vec3(0.0);
+  GuideNodes n = guide_nodes(i, s, dir, k, lit.x, lit.y);
+  vec3 guide = frame.medium_sigma_s * n.m * dot(n.w, GUIDE_PHASES(medium_phase, n));
+#define ADD_VOLUME_GUIDE(v)                                                             \
+  {                                                                                     \
+    vec2 chord = box_overlap(eye, dir, lit.x, lit.y, VOLUME(v).lo, VOLUME(v).hi);       \
+    if (chord.x < chord.y) {                                                            \
+      GuideNodes nv = guide_nodes(i, s, dir, k, chord.x, chord.y);                      \
+      vec4 phases = vec4(VOLUME_PHASE(v, nv.c.x), VOLUME_PHASE(v, nv.c.y), VOLUME_PHASE(v, nv.c.z), \
+                         VOLUME_PHASE(v, nv.c.w));                                      \
+      guide += VOLUME(v).sigma_s * nv.m * dot(nv.w, phases);                            \
+    }                                                                                   \
   }
   FOR_EACH_VOLUME(ADD_VOLUME_GUIDE)
 #undef ADD_VOLUME_GUIDE
