@@ -127,7 +127,7 @@ void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& 
 void LitPyramids::build(const FrameInputs& inputs) {
   const auto start = std::chrono::steady_clock::now();
   triangles_.clear();
-  eye_counts_.assign(inputs.lights.size(), 1);
+  eye_ = {std::vector<int>(inputs.lights.size(), 1), {}};
   nodes_ = visible_ = 0;
   const std::vector<geometry::BeamPolygon> polygons = world_polygons(inputs);
   for (size_t i = 0; i < inputs.lights.size(); ++i) {
@@ -140,12 +140,16 @@ void LitPyramids::build(const FrameInputs& inputs) {
     const geometry::BeamTree tree(origin, scene, epsilon);
     nodes_ += tree.node_count();
     visible_ += static_cast<int>(tree.visible_set().size());
-    const glm::dvec3 eye(inputs.camera.position);
-    for (const geometry::BeamPolygon& p : tree.visible_set())
-      if (inside_pyramid(p, light, eye)) eye_counts_[i] = 0;
-
+    const size_t first = triangles_.size();
     add_pyramids(geometry::ConformingSet(tree.visible_set(), epsilon), light, static_cast<int>(i),
                  caster_reach(polygons, light), epsilon);
+    const glm::dvec3 eye(inputs.camera.position);
+    glm::dvec3 beside = eye;
+    const std::vector<kit::EyePlane> at_eye = kit::take_planes_at_eye(
+        triangles_, first, static_cast<int>(i), eye, kit::max_eye_planes - eye_.planes.size(), beside);
+    eye_.planes.insert(eye_.planes.end(), at_eye.begin(), at_eye.end());
+    for (const geometry::BeamPolygon& p : tree.visible_set())
+      if (inside_pyramid(p, light, beside)) eye_.counts[i] = 0;
   }
   build_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

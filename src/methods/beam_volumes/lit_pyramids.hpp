@@ -27,7 +27,7 @@ public:
   // count at the eye: 0 where the eye is lit, 1 where not.
   void build(const FrameInputs& inputs);
   const std::vector<kit::CountedTriangle>& triangles() const { return triangles_; }
-  const std::vector<int>& eye_counts() const { return eye_counts_; }
+  const kit::EyeCounts& eye_counts() const { return eye_; }
 
   // beam_tree_nodes, visible_polygons, pyramid_faces, build_s.
   std::vector<std::pair<std::string, double>> stats() const;
@@ -44,7 +44,7 @@ private:
   };
   std::vector<Caster> casters_;
   std::vector<kit::CountedTriangle> triangles_;
-  std::vector<int> eye_counts_;
+  kit::EyeCounts eye_;
   double build_s_ = 0.0;
   int nodes_ = 0, visible_ = 0;
 };

@@ -778,7 +778,7 @@ TEST(LightVolumeAirlight, CountingTheMeshGivesRaymarchsImage) {
       LitIntervalPass pass{Settings(lit_interval_settings())};
       pass.prepare();
       const gpu::Texture target = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, w, h);
-      pass.run(frame, mesh.read_back(), mesh.eye_counts(), target, timer);
+      pass.run(frame, mesh.read_back(), {mesh.eye_counts(), {}}, target, timer);
       const Image counted = gpu::read_image(target, w, h);
       const ImageError e = compare_images(counted, marched);
       std::string counts;

@@ -21,19 +21,95 @@ constexpr size_t node_bytes = 3 * sizeof(GLuint);
 // A homogeneous point as a finite one and a direction: (p, 1) → p; (d, 0) → d.
 glm::dvec3 finite(const glm::dvec4& p) { return glm::dvec3(p); }
 
-}  // namespace
-
-glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c) {
+// counted_plane's unit normal in double (0 for a degenerate triangle).
+glm::dvec3 counted_normal(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c) {
   // With one corner at infinity its direction spans the plane with the finite edge.
   glm::dvec3 n;
   if (c.w == 0.0) n = glm::cross(finite(b) - finite(a), finite(c));
   else if (b.w == 0.0) n = glm::cross(finite(b), finite(c) - finite(a));
   else if (a.w == 0.0) n = glm::cross(finite(c) - finite(b), finite(a));
   else n = glm::cross(finite(b) - finite(a), finite(c) - finite(a));
-  const glm::dvec3 point = finite(a.w != 0.0 ? a : b);
   const double length = glm::length(n);
-  const glm::dvec3 unit = length > 0.0 ? n / length : n;
+  return length > 0.0 ? n / length : n;
+}
+
+// Whether p, on the plane of triangle c, lies inside it: a corner at infinity
+// stands as a point `far` along its direction from a finite corner.
+bool holds(const CountedTriangle& c, const glm::dvec3& p, double far) {
+  const glm::dvec4 first(c.corners[c.corners[0].w != 0.0f ? 0 : 1]);
+  glm::dvec3 q[3];
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec4 corner(c.corners[k]);
+    q[k] = corner.w != 0.0 ? finite(corner) : finite(first) + far * glm::normalize(finite(corner));
+  }
+  const glm::dvec3 e1 = q[1] - q[0], e2 = q[2] - q[0], v = p - q[0];
+  const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+  const double d1 = glm::dot(v, e1), d2 = glm::dot(v, e2), det = d11 * d22 - d12 * d12;
+  if (!(det > 0.0)) return false;
+  const double u = (d22 * d1 - d12 * d2) / det, w = (d11 * d2 - d12 * d1) / det;
+  return u > 0.0 && w > 0.0 && u + w < 1.0;
+}
+
+}  // namespace
+
+glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c) {
+  const glm::dvec3 unit = counted_normal(a, b, c);
+  const glm::dvec3 point = finite(a.w != 0.0 ? a : b);
   return glm::vec4(glm::vec3(unit), static_cast<float>(glm::dot(unit, point)));
+}
+
+std::vector<EyePlane> take_planes_at_eye(std::vector<CountedTriangle>& triangles, size_t first, int light,
+                                         const glm::dvec3& eye, size_t room, glm::dvec3& beside) {
+  struct AtEye {
+    size_t index;
+    glm::dvec3 normal;
+  };
+  std::vector<AtEye> found;
+  std::vector<size_t> edge_on;  // through the eye, the eye outside them: a ray from it never crosses them
+  double scale = 0.0;           // the largest magnitude among those found
+  for (size_t i = first; i < triangles.size(); ++i) {
+    const CountedTriangle& c = triangles[i];
+    if (c.light_weight.x != light || c.light_weight.y == 0) continue;
+    // In double, oriented as the plane the GPU counts by (its method may have built it otherwise).
+    glm::dvec3 n = counted_normal(glm::dvec4(c.corners[0]), glm::dvec4(c.corners[1]), glm::dvec4(c.corners[2]));
+    if (glm::dot(n, glm::dvec3(c.plane)) < 0.0) n = -n;
+    double magnitude = glm::length(eye);
+    for (const glm::vec4& corner : c.corners)
+      if (corner.w != 0.0f) magnitude = std::max(magnitude, glm::length(glm::dvec3(corner)));
+    const glm::dvec3 on_plane(c.corners[c.corners[0].w != 0.0f ? 0 : 1]);
+    const double distance = glm::dot(n, eye - on_plane);
+    if (!(glm::length(n) > 0.0 && std::abs(distance) <= 1e-5 * magnitude)) continue;
+    if (!holds(c, eye - distance * n, 1e6 * magnitude)) {
+      edge_on.push_back(i);
+      continue;
+    }
+    found.push_back({i, n});
+    scale = std::max(scale, magnitude);
+  }
+  if (found.size() > room) return {};
+  const auto take_out = [&] {
+    for (const AtEye& f : found) triangles[f.index].light_weight.y = 0;
+    for (const size_t i : edge_on) triangles[i].light_weight.y = 0;
+  };
+  if (found.empty()) {
+    take_out();
+    return {};
+  }
+  // Off the eye against the normals' sum, twice the planes' tolerance: on the
+  // negative side of each (checked), and inside them still.
+  glm::dvec3 away(0.0);
+  for (const AtEye& f : found) away -= f.normal;
+  if (!(glm::length(away) > 0.5)) return {};
+  beside = eye + 2e-5 * scale * glm::normalize(away);
+  std::vector<EyePlane> planes;
+  for (const AtEye& f : found) {
+    CountedTriangle& c = triangles[f.index];
+    const glm::dvec3 on_plane(c.corners[c.corners[0].w != 0.0f ? 0 : 1]);
+    if (!(glm::dot(f.normal, beside - on_plane) < 0.0)) return {};
+    planes.push_back({glm::vec3(f.normal), light, c.light_weight.y});
+  }
+  take_out();
+  return planes;
 }
 
 SettingSpec gamma_samples_setting() {
@@ -177,7 +253,7 @@ void LitIntervalPass::allocate_pool(size_t nodes) {
 }
 
 void LitIntervalPass::run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles,
-                          const std::vector<int>& eye_counts, const gpu::Texture& target, gpu::PassTimer& timer) {
+                          const EyeCounts& eye, const gpu::Texture& target, gpu::PassTimer& timer) {
   {
     gpu::ScopedPass pass(timer, "crossings");
     if (triangles.size() > triangle_capacity_ || triangles_.id() == 0) {
@@ -189,17 +265,17 @@ void LitIntervalPass::run(const SceneFrame& frame, const std::vector<CountedTria
     list_crossings(frame, triangles_, triangles.size());
   }
   gpu::ScopedPass pass(timer, "airlight");
-  resolve(frame, eye_counts, target);
+  resolve(frame, eye, target);
 }
 
 void LitIntervalPass::run(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count,
-                          const std::vector<int>& eye_counts, const gpu::Texture& target, gpu::PassTimer& timer) {
+                          const EyeCounts& eye, const gpu::Texture& target, gpu::PassTimer& timer) {
   {
     gpu::ScopedPass pass(timer, "crossings");
     list_crossings(frame, triangles, triangle_count);
   }
   gpu::ScopedPass pass(timer, "airlight");
-  resolve(frame, eye_counts, target);
+  resolve(frame, eye, target);
 }
 
 // Every pixel's list of crossings, the pool grown and the triangles drawn
@@ -239,13 +315,24 @@ void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles
   if (triangle_count > 0) glGetNamedBufferSubData(node_count_.id(), 0, sizeof(GLuint), &crossings_);
 }
 
-void LitIntervalPass::resolve(const SceneFrame& frame, const std::vector<int>& eye_counts, const gpu::Texture& target) {
+void LitIntervalPass::resolve(const SceneFrame& frame, const EyeCounts& eye, const gpu::Texture& target) {
   const gpu::Program& program =
       gpu::cached_compute_program("methods/kit/lit_intervals.comp.glsl", frame.defines() + defines());
   glUseProgram(program.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
-  gpu::set_uniform(program, "eye_counts", eye_counts);
+  gpu::set_uniform(program, "eye_counts", eye.counts);
+  gpu::set_uniform(program, "eye_plane_count", static_cast<int>(eye.planes.size()));
+  if (!eye.planes.empty()) {
+    std::vector<glm::vec4> planes;
+    std::vector<int> weights;
+    for (const EyePlane& p : eye.planes) {
+      planes.emplace_back(p.normal, static_cast<float>(p.light));
+      weights.push_back(p.weight);
+    }
+    gpu::set_uniform(program, "eye_planes", planes);
+    gpu::set_uniform(program, "eye_plane_weights", weights);
+  }
   loop_limited_ = 0;
   passes_ = 1;
   if (!loop_limit_) {

@@ -32,6 +32,37 @@ struct CountedTriangle {
 // loses the normal's direction, and a crossing's sign with it.
 glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c);
 
+// A counted plane through the eye (take_planes_at_eye): a ray crosses it at
+// t = 0, by +weight where n·dir > 0.
+struct EyePlane {
+  glm::vec3 normal;
+  int light = 0;
+  int weight = 0;
+};
+
+// What the resolve starts each ray's counts from: per light, the count at a
+// point just off the eye on the negative side of its planes through the eye,
+// and those planes (at most max_eye_planes in all).
+struct EyeCounts {
+  std::vector<int> counts;
+  std::vector<EyePlane> planes;
+};
+inline constexpr int max_eye_planes = 8;  // lit_intervals.comp.glsl's MAX_EYE_PLANES
+
+// Light `light`'s triangles among triangles[first, end) whose plane passes
+// through the eye as far as the GPU can tell (within 1e-5 of the coordinates'
+// magnitude, float's rounding of the crossing test many times over) with the
+// eye inside them: seen edge-on they cover no pixel, and a ray's crossing at
+// t ≈ 0 is lost or taken on the side float rounding picks (random scene 31:
+// the eye on a shadow plane, the shadow on the wrong side of a line through
+// the image). Their weights become 0 and they are returned, with in `beside` a
+// point off the eye on the negative side of all of them, where the caller
+// counts; none when there are none, or more than `room`, or no such point is
+// found (then they are left as they were). Triangles through the eye with the
+// eye outside them are crossed by no ray from it: their weights become 0 too.
+std::vector<EyePlane> take_planes_at_eye(std::vector<CountedTriangle>& triangles, size_t first, int light,
+                                         const glm::dvec3& eye, size_t room, glm::dvec3& beside);
+
 // samples: where Γ has no closed form, the points per lit interval that
 // correct it (lit_gamma.glsl's SAMPLES).
 SettingSpec gamma_samples_setting();
@@ -89,11 +120,11 @@ public:
 
   // The crossings of `triangles` with the frame's pixel rays, then Σ Γ over
   // each light's lit intervals into `target`; the frame must be bound.
-  void run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles, const std::vector<int>& eye_counts,
+  void run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles, const EyeCounts& eye,
            const gpu::Texture& target, gpu::PassTimer& timer);
   // The same with the triangles already on the GPU (a mesh a compute pass built).
-  void run(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count,
-           const std::vector<int>& eye_counts, const gpu::Texture& target, gpu::PassTimer& timer);
+  void run(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count, const EyeCounts& eye,
+           const gpu::Texture& target, gpu::PassTimer& timer);
 
   // crossings (drawn into the lists), fragments (shaded by the last draw of
   // the triangles; 0 without pipeline statistics), redraws (the pool grown
@@ -104,7 +135,7 @@ public:
 private:
   void list_crossings(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
   void draw(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
-  void resolve(const SceneFrame& frame, const std::vector<int>& eye_counts, const gpu::Texture& target);
+  void resolve(const SceneFrame& frame, const EyeCounts& eye, const gpu::Texture& target);
   void resolve_in_passes(const SceneFrame& frame, const gpu::Program& program, const gpu::Texture& target);
   void allocate_pool(size_t nodes);
   std::string defines() const;

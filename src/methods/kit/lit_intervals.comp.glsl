@@ -26,6 +26,21 @@ layout(r32ui, binding = 1) readonly uniform uimage2D heads;
 #endif
 
 uniform int eye_counts[LIGHT_COUNT > 0 ? LIGHT_COUNT : 1];  // each light's count at the eye (GLSL has no empty arrays)
+// The counted planes through the eye (lit_interval_pass.hpp, take_planes_at_eye):
+// xyz the normal, w the light; a ray crosses one at t = 0, by its weight where
+// n·dir > 0. Uniforms, not defines: an eye on a plane for one frame must not
+// compile the program again.
+const int MAX_EYE_PLANES = 8;
+uniform vec4 eye_planes[MAX_EYE_PLANES];
+uniform int eye_plane_weights[MAX_EYE_PLANES];
+uniform int eye_plane_count;
+
+int count_at_eye(int i, vec3 dir) {
+  int count = eye_counts[i];
+  for (int k = 0; k < eye_plane_count; ++k)
+    if (int(eye_planes[k].w) == i && dot(eye_planes[k].xyz, dir) > 0.0) count += eye_plane_weights[k];
+  return count;
+}
 
 
 float node_t(uint node) { return uintBitsToFloat(nodes[3u * node]); }
@@ -138,7 +153,7 @@ void add_interval(int i, vec3 dir, float a, float b, inout Walk w) {
 // not overlap); where pyramids overlap by their ε-thick planes, a point is in
 // two and the count reads −1, which is lit all the same.
 void light_airlight(int i, uint head, vec3 dir, float d, inout Walk w) {
-  int count = eye_counts[i];
+  int count = count_at_eye(i, dir);
   float start = 0.0;  // where the current lit stretch began (when count <= 0)
   for (uint node = next_event(i, head); node != END_OF_LIST && !w.stopped; node = next_event(i, node_next(node))) {
     float t = node_t(node);

@@ -32,7 +32,7 @@ private:
       gpu::ScopedPass pass(timer, "volume");
       mesh_.build(frame);
     }
-    intervals_.run(frame, mesh_.triangles(), mesh_.triangle_count(), mesh_.eye_counts(), target, timer);
+    intervals_.run(frame, mesh_.triangles(), mesh_.triangle_count(), {mesh_.eye_counts(), {}}, target, timer);
   }
 
   std::vector<std::pair<std::string, double>> stats() const override {

@@ -75,6 +75,13 @@ void Silhouettes::add_caps(const Caster& caster, const glm::dvec3& eye, double r
   }
 }
 
+// The count at p (the eye, or beside it off the planes through it) over every caster.
+int Silhouettes::count_at(const geometry::LightOrigin& light, const glm::vec3& p) const {
+  int count = 0;
+  for (const Caster& c : casters_) count += geometry::shadow_count(c.topology, c.world, light, p);
+  return count;
+}
+
 // How far from the eye the near plane's rectangle reaches (add_caps), a
 // thousandth more for rounding.
 namespace {
@@ -93,22 +100,27 @@ void Silhouettes::build(const FrameInputs& inputs) {
   const auto start = std::chrono::steady_clock::now();
   move_casters(inputs);
   triangles_.clear();
-  eye_counts_.assign(inputs.lights.size(), 0);
+  eye_ = {std::vector<int>(inputs.lights.size(), 0), {}};
   plane_count_ = silhouette_edges_ = boundary_edges_ = loops_ = 0;
   const glm::dvec3 eye(inputs.camera.position);
   const double reach = near_reach(inputs);
   for (size_t i = 0; i < inputs.lights.size(); ++i) {
     const geometry::LightOrigin light = geometry::light_origin(inputs.lights[i]);
+    const size_t first = triangles_.size();
     planes_.clear();
     for (const Caster& c : casters_) {
       const geometry::ShadowPlaneStats s = geometry::append_shadow_planes(c.topology, c.world, light, planes_);
       silhouette_edges_ += s.silhouette_edges;
       boundary_edges_ += s.boundary_edges;
-      eye_counts_[i] += geometry::shadow_count(c.topology, c.world, light, inputs.camera.position);
       add_caps(c, eye, reach, light, static_cast<int>(i));
     }
     plane_count_ += static_cast<int>(planes_.size());
     add_planes(planes_, inputs.lights[i], static_cast<int>(i));
+    glm::dvec3 beside = eye;
+    const std::vector<kit::EyePlane> at_eye = kit::take_planes_at_eye(
+        triangles_, first, static_cast<int>(i), eye, kit::max_eye_planes - eye_.planes.size(), beside);
+    eye_.planes.insert(eye_.planes.end(), at_eye.begin(), at_eye.end());
+    eye_.counts[i] = count_at(light, glm::vec3(beside));
   }
   build_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const Light& light : inputs.lights)  // for the report, outside build_s: it allocates

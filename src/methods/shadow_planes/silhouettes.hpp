@@ -24,7 +24,7 @@ public:
   // The frame's planes (timed as build_s) and each light's count at the eye.
   void build(const FrameInputs& inputs);
   const std::vector<kit::CountedTriangle>& triangles() const { return triangles_; }
-  const std::vector<int>& eye_counts() const { return eye_counts_; }
+  const kit::EyeCounts& eye_counts() const { return eye_; }
 
   // Counters for the report: caster triangles, planes, silhouette and
   // boundary edges, loops, build_s, and per caster whether it is closed (its
@@ -41,11 +41,12 @@ private:
   void add_planes(const std::vector<geometry::ShadowPlane>& planes, const Light& light, int index);
   void add_caps(const Caster& caster, const glm::dvec3& eye, double reach, const geometry::LightOrigin& light,
                 int index);
+  int count_at(const geometry::LightOrigin& light, const glm::vec3& p) const;
 
   std::vector<Caster> casters_;
   std::vector<geometry::ShadowPlane> planes_;  // of one light, reused
   std::vector<kit::CountedTriangle> triangles_;
-  std::vector<int> eye_counts_;
+  kit::EyeCounts eye_;
   double build_s_ = 0.0;
   int plane_count_ = 0, silhouette_edges_ = 0, boundary_edges_ = 0, loops_ = 0;
 };
