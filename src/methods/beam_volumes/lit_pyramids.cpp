@@ -146,7 +146,7 @@ void LitPyramids::build(const FrameInputs& inputs) {
     const glm::dvec3 eye(inputs.camera.position);
     glm::dvec3 beside = eye;
     const std::vector<kit::EyePlane> at_eye = kit::take_planes_at_eye(
-        triangles_, first, static_cast<int>(i), eye, kit::max_eye_planes - eye_.planes.size(), beside);
+        triangles_, first, static_cast<int>(i), inputs.lights[i], eye, kit::max_eye_planes - eye_.planes.size(), beside);
     eye_.planes.insert(eye_.planes.end(), at_eye.begin(), at_eye.end());
     for (const geometry::BeamPolygon& p : tree.visible_set())
       if (inside_pyramid(p, light, beside)) eye_.counts[i] = 0;

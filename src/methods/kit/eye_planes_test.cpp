@@ -10,6 +10,13 @@ namespace {
 // The shadow plane of the edge (0, 0, 0)–(1, 0, 0) of a point light at
 // (0.5, 1, 0), the plane z = 0, as the two triangles shadow_planes draws (the
 // edge, and its ends pushed to infinity away from the light), weight 1.
+Light point() {
+  Light light;
+  light.type = LightType::point;
+  light.position = {0.5f, 1.0f, 0.0f};
+  return light;
+}
+
 std::vector<CountedTriangle> wedge(int weight = 1) {
   const glm::dvec4 a(0, 0, 0, 1), b(1, 0, 0, 1), light(0.5, 1, 0, 1);
   const glm::vec4 a_far(glm::vec3(a - light), 0.0f), b_far(glm::vec3(b - light), 0.0f);
@@ -22,7 +29,7 @@ TEST(EyePlanes, AnEyeOnAShadowPlaneTakesItsTriangleOut) {
   std::vector<CountedTriangle> triangles = wedge();
   const glm::dvec3 eye(0.5, -2.0, 1e-9);  // below the edge, in the plane z = 0 but for rounding
   glm::dvec3 beside(0.0);
-  const std::vector<EyePlane> planes = take_planes_at_eye(triangles, 0, 0, eye, max_eye_planes, beside);
+  const std::vector<EyePlane> planes = take_planes_at_eye(triangles, 0, 0, point(), eye, max_eye_planes, beside);
   ASSERT_EQ(planes.size(), 1u);
   EXPECT_EQ(planes[0].light, 0);
   EXPECT_EQ(planes[0].weight, 1);
@@ -47,7 +54,7 @@ TEST(EyePlanes, AnEyeOffThePlaneOrBesideTheWedgeGivesNoPlane) {
   for (const auto& c : cases) {
     std::vector<CountedTriangle> triangles = wedge();
     glm::dvec3 beside = c.eye;
-    EXPECT_TRUE(take_planes_at_eye(triangles, 0, 0, c.eye, max_eye_planes, beside).empty());
+    EXPECT_TRUE(take_planes_at_eye(triangles, 0, 0, point(), c.eye, max_eye_planes, beside).empty());
     EXPECT_EQ(beside, c.eye);
     EXPECT_EQ(triangles[0].light_weight.y, c.weight_after);
     EXPECT_EQ(triangles[1].light_weight.y, c.weight_after);
@@ -58,9 +65,9 @@ TEST(EyePlanes, OtherLightsAndEarlierTrianglesAreLeftAlone) {
   std::vector<CountedTriangle> triangles = wedge();
   const glm::dvec3 eye(0.5, -2.0, 0.0);
   glm::dvec3 beside(0.0);
-  EXPECT_TRUE(take_planes_at_eye(triangles, 0, 1, eye, max_eye_planes, beside).empty());  // light 1 has none
-  EXPECT_TRUE(take_planes_at_eye(triangles, 2, 0, eye, max_eye_planes, beside).empty());  // none from index 2
-  EXPECT_TRUE(take_planes_at_eye(triangles, 0, 0, eye, 0, beside).empty());               // no room
+  EXPECT_TRUE(take_planes_at_eye(triangles, 0, 1, point(), eye, max_eye_planes, beside).empty());  // light 1 has none
+  EXPECT_TRUE(take_planes_at_eye(triangles, 2, 0, point(), eye, max_eye_planes, beside).empty());  // none from index 2
+  EXPECT_TRUE(take_planes_at_eye(triangles, 0, 0, point(), eye, 0, beside).empty());               // no room
   EXPECT_EQ(triangles[0].light_weight.y, 1);
 }
 

@@ -7,10 +7,11 @@
 //
 // Gobos and bounded volumes: Γ is closed only in one medium per leg and
 // without a light map's colours; the ray is cut into pieces inside fixed sets
-// of media (unoccluded_airlight), and each lit interval's Γ is multiplied by a
-// ratio estimated at SAMPLES (a setting) points of the interval
-// (interval_correction, correction_samples), docs/decisions.md. A shader calls cut_into_pieces
-// (scene.glsl) once per pixel before lit_gamma.
+// of media (corrected_airlight), and each piece's Γ is multiplied by a ratio
+// estimated at points of the piece, SAMPLES (a setting) per lit interval
+// shared among its pieces (interval_correction, correction_samples),
+// docs/decisions.md. A shader calls cut_into_pieces (scene.glsl) once per
+// pixel before lit_gamma.
 #include "methods/kit/closed_form.glsl"
 #include "methods/kit/equiangular.glsl"
 
@@ -46,10 +47,10 @@ vec3 gamma_light_depth(int i, vec3 x) {
   return has_beam(i) ? sigma_t_at(x) * max(beam_depth(light_beam(i), x), 0.0) : vec3(0.0);
 }
 
-// What Γ leaves out over light i's lit interval [a, b], as a factor: a gobo's
+// What Γ leaves out over [a, b] of light i's lit interval, as a factor: a gobo's
 // colours (no closed form) and, with bounded volumes, the light's leg through
 // media other than those at the point (Γ is closed only for one medium per
-// leg). At SAMPLES points where the light reaches (lit_interval: the spot's
+// leg). At `samples` points where the light reaches (lit_interval: the spot's
 // cone, the beam's box), even in the angle seen from a point or spot (uniform
 // along a beam), the ratio Σ f·map / Σ f·shape·e^{τ − τ_Γ} of the exact
 // in-scattering without the light map f (scene.glsl, every medium on both
@@ -58,15 +59,15 @@ vec3 gamma_light_depth(int i, vec3 x) {
 // that ratio is constant over the interval, and it keeps the gobo's
 // correlation with the cone's edge, the phase and extinction
 // (docs/decisions.md). 1 without a gobo or a volume: Γ is then exact.
-vec3 interval_correction(int i, vec3 eye, vec3 dir, float a, float b) {
+vec3 interval_correction(int i, vec3 eye, vec3 dir, float a, float b, int samples) {
   if (!light_gobos[i] && VOLUME_COUNT == 0) return vec3(1.0);
   vec2 lit = lit_interval(i, eye, dir, a, b);
   if (!(lit.y > lit.x)) return vec3(1.0);  // Γ is 0 there
   Segment s = light_types[i] == LIGHT_DIRECTIONAL ? uniform_segment(lit.x, lit.y)
                                                   : equiangular_segment(lit.x, lit.y, eye, dir, LIGHT(i).position);
   vec3 exact = vec3(0.0), modelled = vec3(0.0);
-  for (int k = 0; k < correction_samples; ++k) {
-    vec2 t = segment_sample(s, (float(k) + 0.5) / float(correction_samples), correction_samples);
+  for (int k = 0; k < samples; ++k) {
+    vec2 t = segment_sample(s, (float(k) + 0.5) / float(samples), samples);
     vec3 x = eye + t.x * dir;
     vec3 f = inscatter_unmapped(i, x, dir, eye_leg_depth(eye, x)) * t.y;
     exact += f * light_map(i, x);
@@ -81,8 +82,16 @@ vec3 interval_correction(int i, vec3 eye, vec3 dir, float a, float b) {
 // volume it lies in) of Γ with that medium's σs and phase and the piece's σt
 // on both legs. Exact on the eye's leg and for the in-scattering; the light's
 // leg is taken through the piece's media all the way to the light, which
-// interval_correction corrects where it crosses other volumes.
-vec3 unoccluded_airlight(int i, vec3 eye, vec3 dir, float a, float b) {
+// interval_correction corrects where it crosses other volumes — piece by
+// piece: Γ's error differs by orders of magnitude between a piece inside a
+// dense volume and one outside it, and one ratio over the whole interval
+// weighed them by a few samples (random scene 41, a point light beside a
+// volume of optical depth 7: rRMSE 4.1 at samples = 64 and 0.53 at 1024 with
+// one ratio, 0.0005 at 64 per piece).
+vec3 corrected_airlight(int i, vec3 eye, vec3 dir, float a, float b) {
+  int overlapped = 0;
+  for (int p = 0; p < PIECES; ++p) overlapped += min(b, breaks[p + 1]) > max(a, breaks[p]) ? 1 : 0;
+  int samples = max(correction_samples / max(overlapped, 1), 1);
   vec3 sum = vec3(0.0);
   for (int p = 0; p < PIECES; ++p) {
     float start = breaks[p], t0 = max(a, start), t1 = min(b, breaks[p + 1]);
@@ -97,15 +106,17 @@ vec3 unoccluded_airlight(int i, vec3 eye, vec3 dir, float a, float b) {
                                   t1 - start);
     FOR_EACH_VOLUME(ADD_VOLUME_COMPONENT)
 #undef ADD_VOLUME_COMPONENT
-    sum += exp(-eye_leg_depth(eye, origin)) * piece;
+    sum += exp(-eye_leg_depth(eye, origin)) * piece * interval_correction(i, eye, dir, t0, t1, samples);
   }
   return sum;
 }
 #else
-vec3 unoccluded_airlight(int i, vec3 eye, vec3 dir, float a, float b) { return closed_form_airlight(i, eye, dir, a, b); }
+vec3 corrected_airlight(int i, vec3 eye, vec3 dir, float a, float b) {
+  return closed_form_airlight(i, eye, dir, a, b) * interval_correction(i, eye, dir, a, b, correction_samples);
+}
 #endif
 
 vec3 lit_gamma(int i, vec3 eye, vec3 dir, float a, float b) {
   if (!(b > a)) return vec3(0.0);
-  return unoccluded_airlight(i, eye, dir, a, b) * interval_correction(i, eye, dir, a, b);
+  return corrected_airlight(i, eye, dir, a, b);
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <glm/geometric.hpp>
 
@@ -33,21 +34,25 @@ glm::dvec3 counted_normal(const glm::dvec4& a, const glm::dvec4& b, const glm::d
   return length > 0.0 ? n / length : n;
 }
 
-// Whether p, on the plane of triangle c, lies inside it: a corner at infinity
-// stands as a point `far` along its direction from a finite corner.
-bool holds(const CountedTriangle& c, const glm::dvec3& p, double far) {
+// Where p, on the plane of triangle c, lies: its least distance inside the
+// triangle's edges (negative outside), a corner at infinity standing as a
+// point `far` along its direction from a finite corner.
+double inside_by(const CountedTriangle& c, const glm::dvec3& p, double far) {
   const glm::dvec4 first(c.corners[c.corners[0].w != 0.0f ? 0 : 1]);
   glm::dvec3 q[3];
   for (int k = 0; k < 3; ++k) {
     const glm::dvec4 corner(c.corners[k]);
     q[k] = corner.w != 0.0 ? finite(corner) : finite(first) + far * glm::normalize(finite(corner));
   }
-  const glm::dvec3 e1 = q[1] - q[0], e2 = q[2] - q[0], v = p - q[0];
-  const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
-  const double d1 = glm::dot(v, e1), d2 = glm::dot(v, e2), det = d11 * d22 - d12 * d12;
-  if (!(det > 0.0)) return false;
-  const double u = (d22 * d1 - d12 * d2) / det, w = (d11 * d2 - d12 * d1) / det;
-  return u > 0.0 && w > 0.0 && u + w < 1.0;
+  const glm::dvec3 m = glm::cross(q[1] - q[0], q[2] - q[0]);
+  double least = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec3 inward = glm::cross(m, q[(k + 1) % 3] - q[k]);
+    const double length = glm::length(inward);
+    if (!(length > 0.0)) return -std::numeric_limits<double>::infinity();
+    least = std::min(least, glm::dot(p - q[k], inward) / length);
+  }
+  return least;
 }
 
 }  // namespace
@@ -59,7 +64,8 @@ glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dve
 }
 
 std::vector<EyePlane> take_planes_at_eye(std::vector<CountedTriangle>& triangles, size_t first, int light,
-                                         const glm::dvec3& eye, size_t room, glm::dvec3& beside) {
+                                         const Light& source, const glm::dvec3& eye, size_t room, glm::dvec3& beside) {
+  const bool directional = source.type == LightType::directional;
   struct AtEye {
     size_t index;
     glm::dvec3 normal;
@@ -73,18 +79,24 @@ std::vector<EyePlane> take_planes_at_eye(std::vector<CountedTriangle>& triangles
     // In double, oriented as the plane the GPU counts by (its method may have built it otherwise).
     glm::dvec3 n = counted_normal(glm::dvec4(c.corners[0]), glm::dvec4(c.corners[1]), glm::dvec4(c.corners[2]));
     if (glm::dot(n, glm::dvec3(c.plane)) < 0.0) n = -n;
-    double magnitude = glm::length(eye);
+    double magnitude = std::max(glm::length(eye), directional ? 0.0 : glm::length(glm::dvec3(source.position)));
     for (const glm::vec4& corner : c.corners)
       if (corner.w != 0.0f) magnitude = std::max(magnitude, glm::length(glm::dvec3(corner)));
     const glm::dvec3 on_plane(c.corners[c.corners[0].w != 0.0f ? 0 : 1]);
-    const double distance = glm::dot(n, eye - on_plane);
-    if (!(glm::length(n) > 0.0 && std::abs(distance) <= 1e-5 * magnitude)) continue;
-    if (!holds(c, eye - distance * n, 1e6 * magnitude)) {
-      edge_on.push_back(i);
-      continue;
-    }
-    found.push_back({i, n});
-    scale = std::max(scale, magnitude);
+    const double distance = glm::dot(n, eye - on_plane), tolerance = 1e-5 * magnitude;
+    // Shadow boundaries only, planes along the light's rays: a plane through the
+    // eye that is not (a caster's own face) is the eye on a surface, which the
+    // crossing test decides exactly (crossings.vert.glsl); on a box's edge the eye
+    // lies on two such planes at once (random scene 24).
+    const double off_light = directional ? std::abs(glm::dot(n, glm::dvec3(source.direction)))
+                                         : std::abs(glm::dot(n, glm::dvec3(source.position) - on_plane)) / magnitude;
+    if (!(glm::length(n) > 0.0 && std::abs(distance) <= tolerance && off_light <= 1e-5)) continue;
+    // On an edge (random scene 24: the eye on a box's edge, on two faces' planes
+    // at once), which side a ray takes depends on more than this plane: drawn.
+    const double inside = inside_by(c, eye - distance * n, 1e6 * magnitude);
+    if (inside < -tolerance) edge_on.push_back(i);
+    if (inside > tolerance) found.push_back({i, n});
+    if (std::abs(inside) > tolerance) scale = std::max(scale, magnitude);
   }
   if (found.size() > room) return {};
   const auto take_out = [&] {

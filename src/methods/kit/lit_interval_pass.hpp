@@ -49,8 +49,8 @@ struct EyeCounts {
 };
 inline constexpr int max_eye_planes = 8;  // lit_intervals.comp.glsl's MAX_EYE_PLANES
 
-// Light `light`'s triangles among triangles[first, end) whose plane passes
-// through the eye as far as the GPU can tell (within 1e-5 of the coordinates'
+// Light `light`'s (`source`'s) triangles among triangles[first, end) whose
+// plane holds the light's rays, a shadow boundary, and passes through the eye as far as the GPU can tell (within 1e-5 of the coordinates'
 // magnitude, float's rounding of the crossing test many times over) with the
 // eye inside them: seen edge-on they cover no pixel, and a ray's crossing at
 // t ≈ 0 is lost or taken on the side float rounding picks (random scene 31:
@@ -61,7 +61,7 @@ inline constexpr int max_eye_planes = 8;  // lit_intervals.comp.glsl's MAX_EYE_P
 // found (then they are left as they were). Triangles through the eye with the
 // eye outside them are crossed by no ray from it: their weights become 0 too.
 std::vector<EyePlane> take_planes_at_eye(std::vector<CountedTriangle>& triangles, size_t first, int light,
-                                         const glm::dvec3& eye, size_t room, glm::dvec3& beside);
+                                         const Light& source, const glm::dvec3& eye, size_t room, glm::dvec3& beside);
 
 // samples: where Γ has no closed form, the points per lit interval that
 // correct it (lit_gamma.glsl's SAMPLES).

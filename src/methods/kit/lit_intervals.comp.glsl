@@ -162,6 +162,14 @@ void light_airlight(int i, uint head, vec3 dir, float d, inout Walk w) {
     if (count > 0 && after <= 0) start = t;
     count = after;
   }
+#ifdef LOOP_LIMIT
+  // The walk itself cut short: this light's later events unread, its last
+  // stretch unknown (and add_interval probes only intervals it sums).
+  if (!w.stopped && loop_limit_reached()) {
+    w.stopped = true;
+    return;
+  }
+#endif
   if (count <= 0) add_interval(i, dir, start, d, w);
 }
 

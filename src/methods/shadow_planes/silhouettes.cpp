@@ -118,7 +118,7 @@ void Silhouettes::build(const FrameInputs& inputs) {
     add_planes(planes_, inputs.lights[i], static_cast<int>(i));
     glm::dvec3 beside = eye;
     const std::vector<kit::EyePlane> at_eye = kit::take_planes_at_eye(
-        triangles_, first, static_cast<int>(i), eye, kit::max_eye_planes - eye_.planes.size(), beside);
+        triangles_, first, static_cast<int>(i), inputs.lights[i], eye, kit::max_eye_planes - eye_.planes.size(), beside);
     eye_.planes.insert(eye_.planes.end(), at_eye.begin(), at_eye.end());
     eye_.counts[i] = count_at(light, glm::vec3(beside));
   }
