@@ -146,11 +146,11 @@ struct Trial {
   Measure measure = Measure::rel_rmse;
   double bound = 0.0;
   std::string reason;
-  // Another method whose image, at these settings over its defaults, the trial
-  // is judged against in place of the reference: where what the trial bounds is
-  // the method's own error given an input both share (light_volume's against
-  // the march through the same shadow maps, whose own error raymarch's trials
-  // bound). An empty method: the reference.
+  // Another method whose image, at these settings over its defaults, widens
+  // the reference's bracket at each pixel (a pixel between the two is right):
+  // where what the trial bounds is the method's own error given an input both
+  // share (light_volume's against the march through the same shadow maps,
+  // whose own error raymarch's trials bound). An empty method: the reference alone.
   struct Baseline {
     std::string method;
     std::vector<std::string> settings;

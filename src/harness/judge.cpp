@@ -167,4 +167,12 @@ Verdict judge_trial(const Trial& trial, const Image& method, const Reference& re
   return {trial.name, "worst_pixel", w.error, trial.bound, pass, detail};
 }
 
+Reference widened(Reference reference, const Image& other) {
+  for (size_t i = 0; i < other.pixels.size(); ++i) {
+    reference.low.pixels[i] = glm::min(reference.low.pixels[i], other.pixels[i]);
+    reference.high.pixels[i] = glm::max(reference.high.pixels[i], other.pixels[i]);
+  }
+  return reference;
+}
+
 }  // namespace airlight::harness

@@ -53,6 +53,9 @@ inline constexpr double bracket_sharpness = 1.0 / 8.0;
 std::vector<bool> sharp_pixels(const Image& centre);
 // A reference known exactly at each pixel (hand-made images, tests).
 inline Reference exactly(const Image& image) { return {image, image, image}; }
+// The bracket widened to hold `other` too (Trial::baseline): a pixel between
+// the two answers is right by either.
+Reference widened(Reference reference, const Image& other);
 
 struct Verdict {
   std::string trial;    // "defaults" or the trial's name

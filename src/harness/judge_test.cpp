@@ -111,6 +111,20 @@ TEST(Judge, APixelIsJudgedByItsBracket) {
 
 // Shifted rays are traced where a neighbour differs by more than an eighth:
 // the step's two sides, not the smooth rest.
+TEST(Judge, ABaselineWidensTheBracket) {
+  Image reference(2, 1), baseline(2, 1), method(2, 1);
+  reference.pixels = {glm::vec3(1.0f), glm::vec3(1.0f)};
+  baseline.pixels = {glm::vec3(2.0f), glm::vec3(0.5f)};
+  const Reference r = widened(exactly(reference), baseline);
+  EXPECT_EQ(r.low.pixels[0], glm::vec3(1.0f));
+  EXPECT_EQ(r.high.pixels[0], glm::vec3(2.0f));
+  EXPECT_EQ(r.low.pixels[1], glm::vec3(0.5f));
+  EXPECT_EQ(r.high.pixels[1], glm::vec3(1.0f));
+  EXPECT_EQ(r.centre.pixels[0], glm::vec3(1.0f));  // the scale stays the reference's
+  method.pixels = {glm::vec3(1.5f), glm::vec3(0.4f)};
+  EXPECT_NEAR(worst_pixel(method, r).error, 0.1, 1e-6);  // 0.1 below 0.5, over the centre's 1
+}
+
 TEST(Judge, SharpPixelsAreThoseBesideAStep) {
   Image centre = flat(1.0f);
   centre.at(0, 0) = glm::vec3(1.1f);  // a tenth: smooth

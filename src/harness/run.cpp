@@ -101,7 +101,7 @@ Verdict Harness::judge(const Scene& scene, const MethodInfo& method, const Trial
   } catch (const std::exception& e) {
     return {name, "renders", 0.0, 0.0, false, "the baseline " + trial->baseline.method + ": " + e.what()};
   }
-  return judge_trial(*trial, image, exactly(baseline));
+  return judge_trial(*trial, image, widened(reference, baseline));
 }
 
 Outcome Harness::judge(const Scene& scene) const {

@@ -100,6 +100,7 @@ TEST(Harness, ATrialWithABaselineIsJudgedAgainstTheBaselinesImage) {
   MethodInfo info = half();
   info.trials = {{"halved", {}, Trial::Measure::worst_pixel, 1e-6, "the same image", {"half_reference", {}}}};
   const Harness harness({&info}, 16, 12);
+  // The bracket runs from the baseline (half) to the reference: inside it everywhere.
   const Verdict against_baseline = harness.judge(scene(), info, "halved");
   EXPECT_TRUE(against_baseline.pass) << against_baseline.detail;
   EXPECT_EQ(against_baseline.value, 0.0);
