@@ -174,8 +174,10 @@ MaskedError masked_error(const Image& image, const Image& reference, const std::
 // and the teapot's volumetric shadow bleed over its outline. The depth-aware
 // gather keeps each pixel's window on its own surface. Equiangular steps, so
 // that the spot's apex adds no error of its own. The normalized gather's light
-// guide already scales by each ray's own length, so it gains less than
-// gather=sum (hence its looser bound). (Uniform steps with the normalized
+// guide already scales by each ray's own length and transmittance, so it
+// gains little there (rRMSE 0.0329 → 0.0322, max abs 0.0220 → 0.0175 since
+// the guide took in the transmittance; docs/decisions.md): it must not lose,
+// and must cut the worst pixel. (Uniform steps with the normalized
 // gather gain nothing there: each pixel's 4 of 64 samples are 0.8 m apart on
 // the far rays, so a residue left out can be the only one that met a narrow
 // shaft.)
@@ -183,7 +185,12 @@ TEST(Interleaved, DepthAwareGatherKeepsShaftsOffTheSilhouette) {
   const Scene scene = builtin_scene("teapot_spot");
   const Image& ref = kit::test::reference_airlight(scene, width, height);
   const std::vector<bool> mask = teapot_silhouette(scene, width, height);
-  for (const auto& [gather, bound] : {std::pair{"gather=sum", 0.3}, std::pair{"gather=normalized", 0.85}}) {
+  struct Bounds {
+    const char* gather;
+    double rel_rmse, max_abs;  // of depth_aware=true over depth_aware=false
+  };
+  for (const auto& [gather, rmse_bound, max_bound] :
+       {Bounds{"gather=sum", 0.3, 0.7}, Bounds{"gather=normalized", 1.0, 0.9}}) {
     auto band_error = [&](const char* depth_aware) {
       return masked_error(interleaved(scene, {"steps=64", "sampling=equiangular", gather, depth_aware}).airlight, ref,
                           mask);
@@ -192,8 +199,8 @@ TEST(Interleaved, DepthAwareGatherKeepsShaftsOffTheSilhouette) {
     std::printf("%s, teapot silhouette band (%ld pixels): rRMSE %.4f → %.4f, max abs %.4f → %.4f\n", gather,
                 std::count(mask.begin(), mask.end(), true), plain.rel_rmse, aware.rel_rmse, plain.max_abs,
                 aware.max_abs);
-    EXPECT_LT(aware.rel_rmse, bound * plain.rel_rmse) << gather;
-    EXPECT_LT(aware.max_abs, 0.7 * plain.max_abs) << gather;
+    EXPECT_LT(aware.rel_rmse, rmse_bound * plain.rel_rmse) << gather;
+    EXPECT_LT(aware.max_abs, max_bound * plain.max_abs) << gather;
   }
 }
 

@@ -28,16 +28,6 @@ float light_shape(int i, vec3 x) {
                    r > 0.0 ? delta / r : LIGHT(i).direction);
 }
 
-// σt of everything that fills x: the medium and the volumes that hold it.
-vec3 sigma_t_at(vec3 x) {
-  vec3 sigma_t = frame.medium_sigma_t;
-#define ADD_VOLUME_SIGMA_T(v) \
-  if (box_contains(x, VOLUME(v).lo, VOLUME(v).hi)) sigma_t += VOLUME(v).sigma_t;
-  FOR_EACH_VOLUME(ADD_VOLUME_SIGMA_T)
-#undef ADD_VOLUME_SIGMA_T
-  return sigma_t;
-}
-
 // The optical depth of x's leg to light i as Γ takes it (unoccluded_airlight):
 // σt at x all the way to a point or spot light, or back to a beam's aperture;
 // none for an unbounded sun (closed_form.glsl).

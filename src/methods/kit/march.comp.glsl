@@ -74,7 +74,7 @@ void main() {
   float d = surface_distance(pixel);
   bool keeps_own = near_light_image(pixel);
   SampleRange range = pixel_samples(pixel, keeps_own);
-  cut_into_pieces(dir, d);  // for the steps weighted by the volumes' scattering (march.glsl)
+  cut_into_pieces(dir, d);  // for where the steps go (march.glsl)
   vec3 sum = march_airlight(dir, d, range, step_offset(pixel));
   if (keeps_own) sum /= float(block * block);  // as a partial sum: M² times it is the pixel's estimate
 #ifdef NORMALIZED

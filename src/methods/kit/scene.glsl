@@ -112,6 +112,24 @@ vec3 scattering(vec3 x, float c) {
   return sum;
 }
 
+// σs and σt of everything that fills x: the medium and the volumes that hold
+// it; under the simplified model the filling medium alone scatters.
+vec3 sigma_s_at(vec3 x) {
+  vec3 sigma = frame.medium_sigma_s;
+  if (simplified_model()) return sigma;
+#define ADD_VOLUME_SIGMA_S(v) if (box_contains(x, VOLUME(v).lo, VOLUME(v).hi)) sigma += VOLUME(v).sigma_s;
+  FOR_EACH_VOLUME(ADD_VOLUME_SIGMA_S)
+#undef ADD_VOLUME_SIGMA_S
+  return sigma;
+}
+vec3 sigma_t_at(vec3 x) {
+  vec3 sigma = frame.medium_sigma_t;
+#define ADD_VOLUME_SIGMA_T(v) if (box_contains(x, VOLUME(v).lo, VOLUME(v).hi)) sigma += VOLUME(v).sigma_t;
+  FOR_EACH_VOLUME(ADD_VOLUME_SIGMA_T)
+#undef ADD_VOLUME_SIGMA_T
+  return sigma;
+}
+
 // optics::optical_depth: ∫σt along the segment a → b, medium and volumes.
 vec3 optical_depth(vec3 a, vec3 b) {
   vec3 depth = frame.medium_sigma_t * length(b - a);
@@ -291,16 +309,17 @@ vec3 inscatter(int i, vec3 x, vec3 view_dir, vec3 eye_depth) {
 }
 
 // ---- pieces of a view ray ------------------------------------------------------
-#if VOLUME_COUNT > 0
 // Bounded media (Biri 2006 §5.2): the pixel's ray [0, d] cut at the ends of its
 // chords through the volumes into pieces, each inside a fixed set of media:
-// breaks[0] = 0 < … < breaks[PIECES] = d (empty pieces where chords miss).
+// breaks[0] = 0 < … < breaks[PIECES] = d (empty pieces where chords miss); one
+// piece without volumes.
 const int PIECES = 2 * VOLUME_COUNT + 1;
 float breaks[PIECES + 1];
 
 void cut_into_pieces(vec3 dir, float d) {
   breaks[0] = 0.0;
   breaks[PIECES] = d;
+#if VOLUME_COUNT > 0
 #define ADD_CHORD_ENDS(v)                                                          \
   {                                                                                \
     vec2 chord = box_overlap(frame.eye, dir, 0.0, d, VOLUME(v).lo, VOLUME(v).hi); \
@@ -318,7 +337,5 @@ void cut_into_pieces(vec3 dir, float d) {
       breaks[j] = lo;
       breaks[j + 1] = hi;
     }
-}
-#else
-void cut_into_pieces(vec3 dir, float d) {}
 #endif
+}
