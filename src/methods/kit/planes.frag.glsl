@@ -57,11 +57,16 @@ Piece angular_piece(vec3 light, vec3 eye, vec3 dir, vec2 t) {
 
 // Samples for a piece of light i's lit interval: one per MAX_SAMPLE_ANGLE of
 // Δθ for an angular piece (a spot's gobo dots span a few degrees), one per
-// gobo texel the piece crosses in a beam, else one; at most MAX_PIECE_SAMPLES.
-// Only a piece passing within about a slab's thickness of a light, or
-// crossing a patterned beam obliquely, needs more than one: the extra samples
-// cost nothing elsewhere.
+// gobo texel the piece crosses in a beam, and at least one per
+// MAX_SAMPLE_DEPTH of optical depth along it; at most MAX_PIECE_SAMPLES. Only
+// a piece passing within about a slab's thickness of a light, crossing a
+// patterned beam obliquely or inside a dense volume needs more than one: the
+// extra samples cost nothing elsewhere. In a volume of optical depth 16 a slab
+// held Δτ ≈ 5, and its one sample missed the transmittance's fall (random
+// scenes 65 and 110: rRMSE 0.21 at 100 planes); at Δτ = 0.25 the midpoint
+// rule's error on exp(−τ) is about Δτ²/24, 0.3 %.
 const float MAX_SAMPLE_ANGLE = PI / 256.0;
+const float MAX_SAMPLE_DEPTH = 0.25;
 const int MAX_PIECE_SAMPLES = 64;
 int piece_samples(int i, Piece p, vec3 dir) {
   float n = 1.0;
@@ -71,6 +76,10 @@ int piece_samples(int i, Piece p, vec3 dir) {
     vec2 texels = vec2(textureSize(gobo_maps, 0).xy) / b.size;  // per metre across the beam
     vec2 across = abs(vec2(dot(dir, b.right), dot(dir, b.up))) * (p.t.y - p.t.x);
     n = max(across.x * texels.x, across.y * texels.y);
+  }
+  if (!simplified_model()) {  // T = 1 there (eye_leg_depth)
+    vec3 depth = sigma_t_at(frame.eye + 0.5 * (p.t.x + p.t.y) * dir) * (p.t.y - p.t.x);
+    n = max(n, max(depth.r, max(depth.g, depth.b)) / MAX_SAMPLE_DEPTH);
   }
   return clamp(int(ceil(n)), 1, MAX_PIECE_SAMPLES);
 }
@@ -93,35 +102,15 @@ in vec3 xi;
 #endif
 layout(location = 0) out vec4 airlight;
 
-// Plane k's sample over [z0, z1] of view depth along the pixel's ray.
-vec3 slab_airlight(ivec2 pixel, vec3 dir, float cos_axis, float z0, float z1) {
+// The light's in-scattering over the piece [t.x, t.y] of the pixel's ray,
+// its samples at `offset` within their shares of it.
+vec3 piece_airlight(vec3 dir, float cos_axis, vec2 t, float offset) {
   vec3 eye = frame.eye;
-  // The slab's piece of the ray in front of the surface, cut to where the
-  // light can arrive (a spot's cone, a beam's box): the sample never falls
-  // outside a shaft that crosses the slab, so shafts keep their edges and thin
-  // pieces (a ray grazing a spot's apex) their light.
-#ifdef LIT_SAMPLING
-  vec2 lit = lit_interval(light, eye, dir, z0 / cos_axis, z1 / cos_axis);
-#else
-  vec2 lit = vec2(z0, z1) / cos_axis;
-#endif
-  if (!(lit.y > lit.x)) return vec3(0.0);
-#ifdef FULLY_LIT_GAMMA
-  // Nilsson §5.4: no object lies between the slab and the light, so its
-  // airlight is Γ over the piece — closed where the light has no gobo and no
-  // volume bounds the medium, else sampled as below without the shadow test.
-  if (!light_gobos[light] && VOLUME_COUNT == 0) return closed_form_airlight(light, eye, dir, lit.x, lit.y);
-#endif
-#ifdef JITTER
-  float offset = texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r;
-#else
-  float offset = 0.5;
-#endif
   vec3 light_position = LIGHT(light).position;
 #if defined(LIT_SAMPLING) && !defined(LATTICE_XI)
-  Piece p = light_types[light] != LIGHT_DIRECTIONAL ? angular_piece(light_position, eye, dir, lit) : even_piece(lit);
+  Piece p = light_types[light] != LIGHT_DIRECTIONAL ? angular_piece(light_position, eye, dir, t) : even_piece(t);
 #else
-  Piece p = even_piece(lit);
+  Piece p = even_piece(t);
 #endif
 #ifdef LIT_SAMPLING
   int n = piece_samples(light, p, dir);
@@ -148,6 +137,44 @@ vec3 slab_airlight(ivec2 pixel, vec3 dir, float cos_axis, float z0, float z1) {
     sum += map * xi_here * s.y;
   }
   return sum;
+}
+
+// Plane k's sample over [z0, z1] of view depth along the pixel's ray.
+vec3 slab_airlight(ivec2 pixel, vec3 dir, float cos_axis, float z0, float z1) {
+  vec3 eye = frame.eye;
+  // The slab's piece of the ray in front of the surface, cut to where the
+  // light can arrive (a spot's cone, a beam's box): the sample never falls
+  // outside a shaft that crosses the slab, so shafts keep their edges and thin
+  // pieces (a ray grazing a spot's apex) their light.
+#ifdef LIT_SAMPLING
+  vec2 lit = lit_interval(light, eye, dir, z0 / cos_axis, z1 / cos_axis);
+#else
+  vec2 lit = vec2(z0, z1) / cos_axis;
+#endif
+  if (!(lit.y > lit.x)) return vec3(0.0);
+#ifdef FULLY_LIT_GAMMA
+  // Nilsson §5.4: no object lies between the slab and the light, so its
+  // airlight is Γ over the piece — closed where the light has no gobo and no
+  // volume bounds the medium, else sampled as below without the shadow test.
+  if (!light_gobos[light] && VOLUME_COUNT == 0) return closed_form_airlight(light, eye, dir, lit.x, lit.y);
+#endif
+#ifdef JITTER
+  float offset = texelFetch(jitter_offsets, pixel % textureSize(jitter_offsets, 0), 0).r;
+#else
+  float offset = 0.5;
+#endif
+#ifdef LIT_SAMPLING
+  // Cut at the volumes' chord ends too: σs and σt jump there (Biri §5.2).
+  cut_into_pieces(dir, lit.y);
+  vec3 sum = vec3(0.0);
+  for (int q = 0; q < PIECES; ++q) {
+    vec2 piece = vec2(max(lit.x, breaks[q]), min(lit.y, breaks[q + 1]));
+    if (piece.y > piece.x) sum += piece_airlight(dir, cos_axis, piece, offset);
+  }
+  return sum;
+#else
+  return piece_airlight(dir, cos_axis, lit, offset);
+#endif
 }
 
 void main() {
