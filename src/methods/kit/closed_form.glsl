@@ -115,23 +115,38 @@ vec3 local_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b)
 
 // A spot: its cone_intervals (hard cut at the cone), each cut again at the
 // inner cone's ends under a smooth edge (gamma.cpp spot_gamma): those pieces
-// lie inside the outer one, in ascending order.
+// lie inside the outer one, in ascending order. Their ends are gathered first
+// (per outer piece: its start, the core's ends, collapsed onto its end where
+// absent, its end), and the up to 2 × 5 pieces summed by one local_piece in a
+// loop the compiler cannot unroll: unrolled, ten copies of it (Sun's closed form
+// per channel, Biri's quadrature) made shaders with a few spots and volumes
+// take minutes to compile on llvmpipe.
 vec3 spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1) {
   vec3 apex = LIGHT(i).position, axis = LIGHT(i).direction;
   float cone = LIGHT(i).cone, inner = cone - LIGHT(i).edge;
   bool cut = light_edges[i] && inner > 0.0;
   ConeIntervals lit = cone_intervals(apex, axis, cone, eye, dir, t0, t1);
-  vec3 sum = vec3(0.0);
-  for (int k = 0; k < lit.count; ++k) {
+  float ends[12];
+  for (int k = 0; k < 2; ++k) {
     float start = lit.piece[k].x, end = lit.piece[k].y;
     ConeIntervals core = ConeIntervals(0, vec2[2](vec2(0.0), vec2(0.0)));
-    if (cut) core = cone_intervals(apex, axis, inner, eye, dir, start, end);
-    for (int j = 0; j < core.count; ++j) {
-      sum += local_piece(i, m, eye, dir, start, core.piece[j].x) +
-             local_piece(i, m, eye, dir, core.piece[j].x, core.piece[j].y);
-      start = core.piece[j].y;
+    if (cut && k < lit.count) core = cone_intervals(apex, axis, inner, eye, dir, start, end);
+    ends[6 * k] = start;
+    for (int j = 0; j < 2; ++j) {
+      ends[6 * k + 1 + 2 * j] = j < core.count ? core.piece[j].x : end;
+      ends[6 * k + 2 + 2 * j] = j < core.count ? core.piece[j].y : end;
     }
-    sum += local_piece(i, m, eye, dir, start, end);
+    ends[6 * k + 5] = end;
+  }
+  vec3 sum = vec3(0.0);
+  for (int n = 0; n < 5 * lit.count; ++n) {
+    float a = 0.0, b = 0.0;
+    for (int q = 0; q < 10; ++q)  // ends[] by selects: indexed by n, Mesa would unroll the loop
+      if (q == n) {
+        a = ends[q + q / 5];
+        b = ends[q + q / 5 + 1];
+      }
+    sum += local_piece(i, m, eye, dir, a, b);
   }
   return sum;
 }

@@ -78,24 +78,49 @@ vec3 interval_correction(int i, vec3 eye, vec3 dir, float a, float b, int sample
 // weighed them by a few samples (random scene 41, a point light beside a
 // volume of optical depth 7: rRMSE 4.1 at samples = 64 and 0.53 at 1024 with
 // one ratio, 0.0005 at 64 per piece).
+//
+// The pieces are walked by a loop the compiler cannot unroll (from the first
+// piece that overlaps [a, b] to the last): unrolled, each of the PIECES copies
+// held 1 + VOLUME_COUNT closed forms and a correction loop, and a shader with a
+// few lights and volumes took minutes to compile on llvmpipe.
 vec3 corrected_airlight(int i, vec3 eye, vec3 dir, float a, float b) {
-  int overlapped = 0;
-  for (int p = 0; p < PIECES; ++p) overlapped += min(b, breaks[p + 1]) > max(a, breaks[p]) ? 1 : 0;
-  int samples = max(correction_samples / max(overlapped, 1), 1);
+  int first = PIECES, last = -1;
+  for (int p = 0; p < PIECES; ++p)
+    if (min(b, breaks[p + 1]) > max(a, breaks[p])) {
+      first = min(first, p);
+      last = p;
+    }
+  int samples = max(correction_samples / max(last - first + 1, 1), 1);
   vec3 sum = vec3(0.0);
-  for (int p = 0; p < PIECES; ++p) {
-    float start = breaks[p], t0 = max(a, start), t1 = min(b, breaks[p + 1]);
+  for (int p = first; p <= last; ++p) {
+    // breaks[p] by selects: indexed by p, Mesa would unroll the loop to the array's length
+    float start = 0.0, end = 0.0;
+    for (int q = 0; q < PIECES; ++q)
+      if (q == p) {
+        start = breaks[q];
+        end = breaks[q + 1];
+      }
+    float t0 = max(a, start), t1 = min(b, end);
     if (!(t1 > t0)) continue;  // data: the piece misses this lit interval
     vec3 origin = eye + start * dir, middle = eye + 0.5 * (t0 + t1) * dir;
     vec3 sigma_t = sigma_t_at(middle);
-    vec3 piece = component_airlight(i, MediumComponent(frame.medium_sigma_s, sigma_t, -1), origin, dir, t0 - start,
-                                    t1 - start);
-#define ADD_VOLUME_COMPONENT(v)                                                                              \
-    if (box_contains(middle, VOLUME(v).lo, VOLUME(v).hi))                                                    \
-      piece += component_airlight(i, MediumComponent(VOLUME(v).sigma_s, sigma_t, v), origin, dir, t0 - start, \
-                                  t1 - start);
-    FOR_EACH_VOLUME(ADD_VOLUME_COMPONENT)
-#undef ADD_VOLUME_COMPONENT
+    // The filling medium (n = 0) and the volumes that hold the piece, by one
+    // component_airlight in a loop the compiler cannot unroll (spot_gamma).
+    int held = 0;
+#define COUNT_HOLDING(v) held += box_contains(middle, VOLUME(v).lo, VOLUME(v).hi) ? 1 : 0;
+    FOR_EACH_VOLUME(COUNT_HOLDING)
+#undef COUNT_HOLDING
+    vec3 piece = vec3(0.0);
+    for (int n = 0; n <= held; ++n) {
+      MediumComponent m = MediumComponent(frame.medium_sigma_s, sigma_t, -1);
+      int seen = 0;
+#define TAKE_NTH_HOLDING(v)                                                    \
+      if (box_contains(middle, VOLUME(v).lo, VOLUME(v).hi) && ++seen == n) \
+        m = MediumComponent(VOLUME(v).sigma_s, sigma_t, v);
+      FOR_EACH_VOLUME(TAKE_NTH_HOLDING)
+#undef TAKE_NTH_HOLDING
+      piece += component_airlight(i, m, origin, dir, t0 - start, t1 - start);
+    }
     sum += exp(-eye_leg_depth(eye, origin)) * piece * interval_correction(i, eye, dir, t0, t1, samples);
   }
   return sum;

@@ -155,22 +155,35 @@ void add_interval(int i, vec3 dir, float a, float b, inout Walk w) {
 void light_airlight(int i, uint head, vec3 dir, float d, inout Walk w) {
   int count = count_at_eye(i, dir);
   float start = 0.0;  // where the current lit stretch began (when count <= 0)
-  for (uint node = next_event(i, head); node != END_OF_LIST && !w.stopped; node = next_event(i, node_next(node))) {
-    float t = node_t(node);
-    int after = count + crossing_change(nodes[3u * node + 1u]);
+  // The events, then the ray's end as one more that closes a lit stretch: one
+  // add_interval per light, so one copy of Γ (lit_gamma.glsl: each copy costs
+  // seconds of llvmpipe's compile).
+  uint node = next_event(i, head);
+  for (bool more = true; more && !w.stopped;) {
+    more = node != END_OF_LIST;
+    float t = d;
+    int after = 1;
+    if (more) {
+      t = node_t(node);
+      after = count + crossing_change(nodes[3u * node + 1u]);
+      node = next_event(i, node_next(node));
+    }
+#ifdef LOOP_LIMIT
+    // The walk itself cut short: this light's later events unread, its last
+    // stretch unknown (and add_interval probes only intervals it sums).
+    if (!more && loop_limit_reached()) {
+      w.stopped = true;
+      return;
+    }
+#endif
     if (count <= 0 && after > 0) add_interval(i, dir, start, t, w);
     if (count > 0 && after <= 0) start = t;
     count = after;
   }
 #ifdef LOOP_LIMIT
-  // The walk itself cut short: this light's later events unread, its last
-  // stretch unknown (and add_interval probes only intervals it sums).
-  if (!w.stopped && loop_limit_reached()) {
-    w.stopped = true;
-    return;
-  }
+  // The limit ends the walk's loop itself, before its last turn.
+  if (!w.stopped && loop_limit_reached()) w.stopped = true;
 #endif
-  if (count <= 0) add_interval(i, dir, start, d, w);
 }
 
 void main() {

@@ -24,21 +24,53 @@ layout(r32ui, binding = 1) readonly uniform uimage2DArray bounds;
 // Per light, 0 when the eye is inside its shell (LightVolumeMesh).
 layout(std430, binding = BINDING_SHELL_EYE) readonly buffer ShellEye { int shell_eye[]; };
 
-// Γ over [a, b] times light i's visibility there, where no shadow boundary
-// lies: one value over the part the light reaches, read at its middle.
-vec3 unbroken_stretch(int i, vec3 dir, float a, float b) {
+// Where light i's Γ over [a, b] counts whole, no shadow boundary lying there:
+// the part the light reaches, weighed by the visibility at its middle; for a
+// directional light's map, beside the map's column (nothing occludes there)
+// its own stretch and the rest, lit, when the column's middle is in shadow.
+// Up to two parts; an empty one has y ≤ x.
+struct Unbroken {
+  vec2 part[2];
+  float visibility;
+};
+Unbroken unbroken_stretch(int i, vec3 dir, float a, float b) {
   vec3 eye = frame.eye;
   vec2 lit = lit_interval(i, eye, dir, a, b);
-  if (!(lit.y > lit.x)) return vec3(0.0);
+  Unbroken whole = Unbroken(vec2[2](lit, vec2(0.0)), 1.0);
+  if (!(lit.y > lit.x)) return whole;
   if (light_types[i] == LIGHT_DIRECTIONAL && light_shadows[i] == SHADOW_MAP) {
-    // Beside the map's column nothing occludes: its own stretch, and the rest lit.
     vec4 o = LIGHT(i).shadow_matrix * vec4(eye, 1.0), v = LIGHT(i).shadow_matrix * vec4(dir, 0.0);
     vec2 column = box_overlap(vec3(o.xy, 0.0), vec3(v.xy, 0.0), lit.x, lit.y, vec3(-1.0), vec3(1.0));
     if (column.y > column.x && shadow_visibility(i, eye + 0.5 * (column.x + column.y) * dir) == 0.0)
-      return lit_gamma(i, eye, dir, lit.x, column.x) + lit_gamma(i, eye, dir, column.y, lit.y);
-    return lit_gamma(i, eye, dir, lit.x, lit.y);
+      return Unbroken(vec2[2](vec2(lit.x, column.x), vec2(column.y, lit.y)), 1.0);
+    return whole;
   }
-  return shadow_visibility(i, eye + 0.5 * (lit.x + lit.y) * dir) * lit_gamma(i, eye, dir, lit.x, lit.y);
+  whole.visibility = shadow_visibility(i, eye + 0.5 * (lit.x + lit.y) * dir);
+  return whole;
+}
+
+// Γ over the unbroken stretches before and after [front, back]: one lit_gamma
+// over their up to four parts, in a loop the compiler cannot unroll (each copy
+// of Γ costs seconds of llvmpipe's compile; lit_gamma.glsl).
+vec3 exact_parts_airlight(int i, vec3 dir, float front, float back, float d) {
+  Unbroken before = unbroken_stretch(i, dir, 0.0, front), after = unbroken_stretch(i, dir, back, d);
+  vec2 parts[4] = vec2[4](before.part[0], before.part[1], after.part[0], after.part[1]);
+  float weights[4] = float[4](before.visibility, before.visibility, after.visibility, after.visibility);
+  int count = 0;
+  for (int q = 0; q < 4; ++q) count += parts[q].y > parts[q].x && weights[q] > 0.0 ? 1 : 0;
+  vec3 sum = vec3(0.0);
+  for (int n = 0; n < count; ++n) {
+    vec2 part = vec2(0.0);
+    float weight = 0.0;
+    int seen = 0;
+    for (int q = 0; q < 4; ++q)  // the n-th part by selects: indexed by n, Mesa would unroll the loop
+      if (parts[q].y > parts[q].x && weights[q] > 0.0 && seen++ == n) {
+        part = parts[q];
+        weight = weights[q];
+      }
+    sum += weight * lit_gamma(i, frame.eye, dir, part.x, part.y);
+  }
+  return sum;
 }
 
 // Light i's part of the pixel's ray [0, d]: its samples of this dispatch over
@@ -53,7 +85,7 @@ vec3 light_part(int i, ivec2 pixel, vec3 dir, float d, SampleRange r, float offs
   front = min(front, d);
   back = clamp(back, front, d);
   vec3 sum = march_between(i, dir, front, back, r, offset);
-  if (exact_parts) sum += unbroken_stretch(i, dir, 0.0, front) + unbroken_stretch(i, dir, back, d);
+  if (exact_parts) sum += exact_parts_airlight(i, dir, front, back, d);
   return sum;
 }
 
