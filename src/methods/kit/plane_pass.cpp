@@ -49,7 +49,8 @@ std::vector<SettingSpec> plane_settings(bool regions) {
            "plane = Dobashi's: one sample per plane at the middle of its slab's part in front of the surface, "
            "weighted by Δt; lit = the slab's piece cut to the light's lit interval (a spot's cone, a beam's box), "
            "sampled evenly in the angle seen from a point or spot light with the falloff integrated exactly, and "
-           "with more samples where the piece sweeps a gobo or passes beside the light (lattice: ξ stays sampled)"},
+           "with more samples where the piece sweeps a gobo, passes beside the light or crosses a dense medium, and cut "
+           "at bounded volumes' chord ends (lattice: ξ stays sampled)"},
           {"clip", T::boolean, 1, 0, 1, {},
            "clip the planes to the light's influence volume (a pyramid around a spot's cone, a beam's box), so "
            "fragments outside it are never shaded (Nilsson 3.1)"}};
