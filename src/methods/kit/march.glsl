@@ -283,15 +283,19 @@ vec3 beam_decay(int i, vec3 dir) {
 // where the eye's optical depth is `depth` and σt is sigma_t (x its middle):
 // ∫σs·p·T·dx/r² with T the eye's transmittance, to the light too for a point
 // or spot light. A directional light: cos θ is the same all along the ray and
-// T = exp(−depth − k·(t − start)) with k = σt (and a beam's light leg), in closed
-// form. A point or spot light: with t − foot = h·tan u, dx/r² = du/h and
+// T = exp(−depth − σt·(t − start) − leg(t)) in closed form, where a beam's light
+// leg is exact at a and grows by beam_decay past it; the leg at a must be
+// there, not only its growth, or the beam's guide is off by a constant beside a
+// point light's and the gather mixes the two wrongly (random seed 97: rRMSE 24). A point or spot light: with t − foot = h·tan u, dx/r² = du/h and
 // cos θ = −sin u (the light's travel against the view ray, as
 // inscatter_unmapped), so the integral is 4-point Gauss–Legendre in u, T at
 // each node.
 vec3 guide_piece(int i, Segment s, vec3 dir, vec3 x, float start, vec3 depth, vec3 sigma_t, float a, float b) {
   if (light_types[i] == LIGHT_DIRECTIONAL) {
+    vec3 leg = has_beam(i) ? light_leg_depth(i, frame.eye + a * dir) : vec3(0.0);
     vec3 k = sigma_t + beam_decay(i, dir);
-    return scattering(x, dot(-LIGHT(i).direction, dir)) * exp(-depth) * transmitted_length(k, a - start, b - start);
+    return scattering(x, dot(-LIGHT(i).direction, dir)) * exp(-depth - sigma_t * (a - start) - leg) *
+           transmitted_length(k, 0.0, b - a);
   }
   const vec4 node = vec4(-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
   const vec4 weight = vec4(0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451);
@@ -334,7 +338,7 @@ vec3 light_guide_of(int i, vec3 dir, float d) {
     vec3 sigma_t = sigma_t_at(x);
     float a = max(start, lit.x), b = min(end, lit.y);
     if (b > a) guide += guide_piece(i, s, dir, x, start, depth, sigma_t, a, b);
-    depth += (sigma_t + (sun ? beam_decay(i, dir) : vec3(0.0))) * (end - start);
+    depth += sigma_t * (end - start);
   }
   return LIGHT(i).color * guide;
 }
