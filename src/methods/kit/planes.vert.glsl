@@ -20,13 +20,14 @@ uniform float dz;         // slab thickness in view depth
 
 void main() {
   ivec2 corner = ivec2(gl_VertexID % (lattice + 1), gl_VertexID / (lattice + 1));
-  vec3 ray = view_ray(2.0 * vec2(corner) / float(lattice) - 1.0);
+  vec2 ndc = 2.0 * vec2(corner) / float(lattice) - 1.0;
+  vec3 ray = view_ray(ndc);
   plane = gl_InstanceID;
   vec3 eye = frame.eye;
   // The near face, moved just past the near plane for the first slab (the
   // depth test needs a depth; no surface lies nearer than the near plane).
   float near_face = max(float(plane) * dz, frame.near_plane * 1.0001);
-  gl_Position = frame.view_projection * vec4(eye + near_face * ray, 1.0);
+  gl_Position = clip_at_depth(ndc, near_face);
   vec3 x = eye + (float(plane) + 0.5) * dz * ray;
   set_clip_distances(x);
   // Per unit view depth: a step dz in depth is dz·|ray| = dz/cos along the ray

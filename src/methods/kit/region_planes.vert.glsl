@@ -15,6 +15,6 @@ void main() {
   vec3 eye = frame.eye;
   float depth = dot(position - eye, frame.forward);
   float raster = max(depth, frame.near_plane * 1.0001);
-  gl_Position = frame.view_projection * vec4(eye + (position - eye) * (raster / depth), 1.0);
+  gl_Position = clip_at_depth(ndc_of(position - eye), raster);
   set_clip_distances(position);
 }
