@@ -97,15 +97,16 @@ vec2 gobo_uv(vec3 axis, vec3 right, vec3 up, float tan_cone, vec3 dir) {
 // C++ gobo colour: bilinear between pixel centres (i + 0.5)/W with indices
 // clamped to the edge.
 //
-// Upload contract: layer `layer` holds the gobo Image with its rows flipped, so
-// that texel row 0 (GL's t = 0) is the Image's bottom row and t = v (Image row 0
-// is the top, v = 1). Any filter and wrap mode may be set: texelFetch ignores
+// Upload contract: layer `layer` holds the gobo Image, `size` texels from the
+// layer's corner (a smaller gobo than the array's keeps its own texels, never
+// resampled), with its rows flipped, so that texel row 0 (GL's t = 0) is the
+// Image's bottom row and t = v (Image row 0 is the top, v = 1). Any filter and
+// wrap mode may be set: texelFetch ignores
 // them. The filtering is done here in float because GL_LINEAR hardware is
 // allowed (and on most GPUs does) quantize the weights to 8 bits, ≈ 0.2% of
 // the texel contrast, which would miss the C++ by far more than float precision.
-vec3 sample_gobo(sampler2DArray gobos, float layer, vec2 uv) {
+vec3 sample_gobo(sampler2DArray gobos, float layer, ivec2 size, vec2 uv) {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);
-  ivec2 size = textureSize(gobos, 0).xy;
   vec2 p = uv * vec2(size) - 0.5;  // t = v, so this is C++'s (1 - v)·H - 0.5 mirrored
   vec2 f = floor(p);
   vec2 w = p - f;

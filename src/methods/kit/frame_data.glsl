@@ -50,7 +50,7 @@ struct SceneLight {
   float texel_per_distance;  // a shadow texel's size at the point is
   float texel_constant;      // (texel_per_distance·distance + texel_constant) / resolution
   float beam_length;  // m along direction; 0: a directional light without a beam
-  float unused;
+  int gobo_size;      // the gobo's width · 65536 + height: its texels sit at its layer's corner
 };
 
 // One bounded box volume (std430 array); its coefficients add to the medium's.

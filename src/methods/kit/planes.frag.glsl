@@ -73,7 +73,7 @@ int piece_samples(int i, Piece p, vec3 dir) {
   if (p.h > 0.0) n = (p.theta.y - p.theta.x) / MAX_SAMPLE_ANGLE;
   else if (has_beam(i) && LIGHT(i).gobo_layer >= 0) {
     Beam b = light_beam(i);
-    vec2 texels = vec2(textureSize(gobo_maps, 0).xy) / b.size;  // per metre across the beam
+    vec2 texels = vec2(gobo_size(i)) / b.size;  // per metre across the beam
     vec2 across = abs(vec2(dot(dir, b.right), dot(dir, b.up))) * (p.t.y - p.t.x);
     n = max(across.x * texels.x, across.y * texels.y);
   }

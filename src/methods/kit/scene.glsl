@@ -175,9 +175,12 @@ struct Arrival {
 // light_arrival = light_arrival_unmapped × light_map, so that a method that
 // projects the light map itself (planes) can evaluate the two apart.
 
+// Light i's gobo in texels (frame_data.glsl: its width · 65536 + height).
+ivec2 gobo_size(int i) { return ivec2(LIGHT(i).gobo_size >> 16, LIGHT(i).gobo_size & 0xffff); }
+
 // The gobo colour of light i at uv (1 without a gobo; black outside [0, 1]²).
 vec3 gobo_colour(int i, vec2 uv) {
-  return light_gobos[i] ? sample_gobo(gobo_maps, float(LIGHT(i).gobo_layer), uv) : vec3(1.0);
+  return light_gobos[i] ? sample_gobo(gobo_maps, float(LIGHT(i).gobo_layer), gobo_size(i), uv) : vec3(1.0);
 }
 
 // optics::light_map: the unitless per-channel factor of what light i sends to

@@ -68,22 +68,18 @@ SceneLight light_record(const Light& light, int gobo_layer) {
   g.type = static_cast<int>(light.type);
   g.shadow_kind = shadow_none;
   g.gobo_layer = gobo_layer;
+  if (gobo_layer >= 0) g.gobo_size = light.gobo->width * 65536 + light.gobo->height;
   return g;
 }
 
 // ---- textures -----------------------------------------------------------------
 
-// The gobo resampled to width × height by optics::sample_gobo at the new texel
-// centres, rows flipped (texel row 0 = the image's bottom row: t = v, light.glsl).
-std::vector<glm::vec4> gobo_texels(const Image& gobo, int width, int height) {
-  std::vector<glm::vec4> texels(static_cast<size_t>(width) * height);
-  const bool same = gobo.width == width && gobo.height == height;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const glm::dvec2 uv((x + 0.5) / width, (y + 0.5) / height);
-      const glm::vec3 c = same ? gobo.at(x, height - 1 - y) : glm::vec3(optics::sample_gobo(gobo, uv));
-      texels[static_cast<size_t>(y) * width + x] = glm::vec4(c, 1.0f);
-    }
+// The gobo's texels, rows flipped (texel row 0 = the image's bottom row: t = v, light.glsl).
+std::vector<glm::vec4> gobo_texels(const Image& gobo) {
+  std::vector<glm::vec4> texels(gobo.pixels.size());
+  for (int y = 0; y < gobo.height; ++y)
+    for (int x = 0; x < gobo.width; ++x)
+      texels[static_cast<size_t>(y) * gobo.width + x] = glm::vec4(gobo.at(x, gobo.height - 1 - y), 1.0f);
   return texels;
 }
 
@@ -221,14 +217,17 @@ void SceneFrame::upload_gobos(const Scene& scene) {
   for (const Light& light : scene.lights)
     if (has_gobo(light) && std::find(gobo_images_.begin(), gobo_images_.end(), light.gobo.get()) == gobo_images_.end())
       gobo_images_.push_back(light.gobo.get());
-  const Image* largest = nullptr;
-  for (const Image* gobo : gobo_images_)
-    if (!largest || gobo->pixels.size() > largest->pixels.size()) largest = gobo;
-  const int w = largest ? largest->width : 1, h = largest ? largest->height : 1;
+  int w = 1, h = 1;
+  for (const Image* gobo : gobo_images_) {
+    w = std::max(w, gobo->width);
+    h = std::max(h, gobo->height);
+  }
   gobos_ = make_texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, w, h, std::max(static_cast<int>(gobo_images_.size()), 1));
   for (size_t layer = 0; layer < gobo_images_.size(); ++layer) {
-    const std::vector<glm::vec4> texels = gobo_texels(*gobo_images_[layer], w, h);
-    glTextureSubImage3D(gobos_.id(), 0, 0, 0, static_cast<GLint>(layer), w, h, 1, GL_RGBA, GL_FLOAT, texels.data());
+    const Image& gobo = *gobo_images_[layer];
+    const std::vector<glm::vec4> texels = gobo_texels(gobo);
+    glTextureSubImage3D(gobos_.id(), 0, 0, 0, static_cast<GLint>(layer), gobo.width, gobo.height, 1, GL_RGBA, GL_FLOAT,
+                        texels.data());
   }
 }
 

@@ -66,10 +66,10 @@ struct FrameSettings {
 
 class SceneFrame {
 public:
-  // Uploads what the scene fixes; needs a current GL context. Gobos of
-  // different sizes are resampled (bilinearly, by optics::sample_gobo) to the
-  // largest one's size so that they share one texture array; same-sized gobos
-  // are uploaded exactly.
+  // Uploads what the scene fixes; needs a current GL context. The gobos share
+  // one texture array as large as the widest and the tallest; each keeps its
+  // own texels at its layer's corner (never resampled: a 16×16 gobo resampled
+  // to 16×24 beside another lit random scene 176 21 % brighter than the reference).
   void prepare(const Scene& scene);
 
   // One frame: uploads `inputs`, then the G-buffer ("gbuffer", or "depth" from

@@ -138,10 +138,15 @@ TEST(OpticsTwin, SpotConeAcrossTheEdge) {
   }
 }
 
-// A small image with distinct texels, uploaded as the layer `layer` of a 2D
-// array texture with its rows flipped (the contract of sample_gobo in light.glsl).
+// A small image with distinct texels, uploaded at the corner of layer `layer`
+// of a larger 2D array texture with its rows flipped (the contract of
+// sample_gobo in light.glsl: a gobo smaller than the array keeps its texels),
+// the rest of the layer white so that reading past the gobo shows.
 Texture upload_gobo(const Image& image, int layer, int layers) {
-  Texture texture = make_texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, image.width, image.height, layers);
+  const int width = image.width + 3, height = image.height + 2;
+  Texture texture = make_texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, width, height, layers);
+  const std::vector<glm::vec4> white(size_t(width) * height, glm::vec4(1.0f));
+  glTextureSubImage3D(texture.id(), 0, 0, 0, layer, width, height, 1, GL_RGBA, GL_FLOAT, white.data());
   std::vector<glm::vec4> rows(image.pixels.size());
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) rows[size_t(image.height - 1 - y) * image.width + x] = glm::vec4(image.at(x, y), 1);
@@ -189,7 +194,7 @@ TEST(OpticsTwin, GoboCoordinatesAndSamplesAcrossTheSquare) {
         in.emplace_back(right, float(layer));
         in.emplace_back(up, 0.0f);
         in.emplace_back(dir, 0.0f);
-        in.emplace_back(uniform(rng, -0.1f, 1.1f), uniform(rng, -0.1f, 1.1f), 0.0f, 0.0f);
+        in.emplace_back(uniform(rng, -0.1f, 1.1f), uniform(rng, -0.1f, 1.1f), image->width, image->height);
         lights.push_back(light);
       }
     }
@@ -200,7 +205,7 @@ TEST(OpticsTwin, GoboCoordinatesAndSamplesAcrossTheSquare) {
         const glm::vec4 first_case = in[k];  // copied: push_back may reallocate `in`
         in.push_back(first_case);
       }
-      in.emplace_back(0.5f * x / image->width, 0.5f * y / image->height, 0.0f, 0.0f);
+      in.emplace_back(0.5f * x / image->width, 0.5f * y / image->height, image->width, image->height);
       const Light first_light = lights[0];
       lights.push_back(first_light);
     }
