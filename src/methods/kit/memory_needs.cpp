@@ -8,7 +8,7 @@ namespace airlight::kit {
 
 std::vector<int> shadow_kinds(const Scene& scene) {
   std::vector<Bounds> meshes;
-  for (const Mesh& mesh : scene.meshes) meshes.push_back(mesh_bounds(mesh));
+  for (const Mesh& mesh : scene.meshes) meshes.push_back(caster_bounds(mesh));
   const Bounds bounds = world_bounds(meshes, {});
   std::vector<int> kinds;
   for (const Light& light : scene.lights) kinds.push_back(shadow_kind(light, bounds, nullptr));

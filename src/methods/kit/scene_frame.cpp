@@ -167,16 +167,16 @@ void SceneFrame::upload_meshes(const Scene& scene) {
   std::vector<Vertex> vertices;
   std::vector<GLuint> indices;
   std::vector<glm::vec4> face_normals;
-  mesh_bounds_.clear();
+  caster_bounds_.clear();
   std::vector<GLuint> bases;
   caster_index_count_ = 0;
   for (const Mesh& mesh : scene.meshes) {
     bases.push_back(static_cast<GLuint>(vertices.size()));
-    const auto object = static_cast<GLint>(mesh_bounds_.size());
+    const auto object = static_cast<GLint>(caster_bounds_.size());
     const bool normals = mesh.normals.size() == mesh.positions.size();
     for (size_t v = 0; v < mesh.positions.size(); ++v)
       vertices.push_back({mesh.positions[v], normals ? mesh.normals[v] : glm::vec3(0.0f), mesh.albedo, object});
-    mesh_bounds_.push_back(mesh_bounds(mesh));
+    caster_bounds_.push_back(caster_bounds(mesh));
   }
   // The shadow casters' triangles first, so that the shadow maps draw them alone.
   for (const bool casters : {true, false})
@@ -270,7 +270,7 @@ SceneFrame::Media SceneFrame::upload_medium() {
 // own, or those of the engine's map, converted into airlight's layer; none
 // at all when the frame's method reads no shadow map.
 std::vector<SceneLight> SceneFrame::upload_lights(const EngineFrame* engine, int resolution, bool shadows) {
-  const Bounds bounds = world_bounds(mesh_bounds_, inputs_.transforms);
+  const Bounds bounds = world_bounds(caster_bounds_, inputs_.transforms);
   std::vector<SceneLight> records;
   shadow_draws_.clear();
   ShadowLayout layout;

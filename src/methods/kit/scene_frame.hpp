@@ -148,7 +148,7 @@ private:
   std::vector<ShadowDraw> shadow_draws_;
   ShadowLayout shadow_layout_;
   std::vector<const Image*> gobo_images_;  // per gobo layer
-  std::vector<Bounds> mesh_bounds_;  // per mesh, in object space
+  std::vector<Bounds> caster_bounds_;  // per mesh, in object space (caster_bounds)
   int index_count_ = 0, caster_index_count_ = 0, shadow_resolution_ = 0;
 
   VertexArray vertex_array_;

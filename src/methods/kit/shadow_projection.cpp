@@ -29,8 +29,9 @@ glm::dvec3 up_hint(const glm::dvec3& dir) {
 
 }  // namespace
 
-Bounds mesh_bounds(const Mesh& mesh) {
+Bounds caster_bounds(const Mesh& mesh) {
   Bounds b;
+  if (!mesh.casts_shadows) return b;
   for (const glm::vec3& p : mesh.positions) b.add(glm::dvec3(p));
   return b;
 }
