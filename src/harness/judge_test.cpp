@@ -127,7 +127,7 @@ TEST(Judge, ABaselineWidensTheBracket) {
 
 TEST(Judge, SharpPixelsAreThoseBesideAStep) {
   Image centre = flat(1.0f);
-  centre.at(0, 0) = glm::vec3(1.1f);  // a tenth: smooth
+  centre.at(0, 0) = glm::vec3(1.01f);  // a hundredth: smooth
   centre.at(3, 2) = glm::vec3(2.0f);  // a step
   const std::vector<bool> sharp = sharp_pixels(centre);
   const auto at = [&](int x, int y) { return bool(sharp[static_cast<size_t>(y * 4 + x)]); };
