@@ -69,6 +69,21 @@ TEST(Gpu, ComputeProgramWithIncludesAndDefinesWritesABuffer) {
   context.check("fill");
 }
 
+// The cache compiles a define set once, and after clear_program_cache again.
+TEST(Gpu, ProgramCacheCompilesOnceUntilCleared) {
+  Context& context = Context::headless();
+  const int before = cached_program_count();
+  const GLuint first = cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 0.25\n").id();
+  EXPECT_EQ(cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 0.25\n").id(), first);
+  EXPECT_EQ(cached_program_count(), before + 1);
+  clear_program_cache();
+  EXPECT_EQ(cached_program_count(), 0);
+  EXPECT_FALSE(glIsProgram(first)) << "deleted with the cache";
+  cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 0.25\n");
+  EXPECT_EQ(cached_program_count(), 1);
+  context.check("program cache");
+}
+
 TEST(Gpu, IncludedFilesAppearOnce) {
   const std::string text = expand_source("gpu/test_shaders/fill.comp.glsl");
   EXPECT_EQ(text.rfind("#version 450 core\n", 0), 0u);

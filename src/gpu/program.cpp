@@ -156,6 +156,8 @@ const Program& cached_compute_program(const std::string& name, const std::string
 
 int cached_program_count() { return static_cast<int>(program_cache().size()); }
 
+void clear_program_cache() { program_cache().clear(); }
+
 void dispatch_pixels(int width, int height) {
   glDispatchCompute(static_cast<GLuint>((width + pixel_workgroup - 1) / pixel_workgroup),
                     static_cast<GLuint>((height + pixel_workgroup - 1) / pixel_workgroup), 1);

@@ -38,6 +38,10 @@ const Program& cached_program(std::initializer_list<Stage> stages, const std::st
 const Program& cached_compute_program(const std::string& name, const std::string& defines = "");
 // Programs the cache has compiled so far in this process.
 int cached_program_count();
+// Deletes every cached program (the context current, none of them in use): a
+// long run over scenes of many structures would otherwise keep all their
+// programs, hundreds of megabytes of llvmpipe's code per structure.
+void clear_program_cache();
 
 // Uniforms by name (a name the linker removed is ignored, as GL does).
 void set_uniform(const Program& p, const char* name, int v);
