@@ -286,10 +286,10 @@ vec3 beam_decay(int i, vec3 dir) {
 // T = exp(−depth − σt·(t − start) − leg(t)) in closed form, where a beam's light
 // leg is exact at a and grows by beam_decay past it; the leg at a must be
 // there, not only its growth, or the beam's guide is off by a constant beside a
-// point light's and the gather mixes the two wrongly (random seed 97: rRMSE 24). A point or spot light: with t − foot = h·tan u, dx/r² = du/h and
-// cos θ = −sin u (the light's travel against the view ray, as
-// inscatter_unmapped), so the integral is 4-point Gauss–Legendre in u, T at
-// each node.
+// point light's and the gather mixes the two wrongly (random scene 97). A point
+// or spot light: with t − foot = h·tan u, dx/r² = du/h and cos θ = −sin u
+// (the light's travel against the view ray, as inscatter_unmapped), so the
+// integral is 4-point Gauss–Legendre in u, T at each node.
 vec3 guide_piece(int i, Segment s, vec3 dir, vec3 x, float start, vec3 depth, vec3 sigma_t, float a, float b) {
   if (light_types[i] == LIGHT_DIRECTIONAL) {
     vec3 leg = has_beam(i) ? light_leg_depth(i, frame.eye + a * dir) : vec3(0.0);
