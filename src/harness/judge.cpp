@@ -109,7 +109,8 @@ WorstPixel worst_pixel(const Image& method, const Reference& reference) {
       const double r = largest_channel(centre.at(x, y));
       if (r < judged) continue;
       const size_t i = static_cast<size_t>(y) * static_cast<size_t>(centre.width) + static_cast<size_t>(x);
-      const double e = largest_channel(outside(method.at(x, y), reference, i)) / r;
+      const glm::vec3 nearest = glm::clamp(method.at(x, y), reference.low.pixels[i], reference.high.pixels[i]);
+      const double e = largest_channel(outside(method.at(x, y), reference, i)) / std::max(r, double(largest_channel(nearest)));
       if (e > worst.error || worst.x < 0) worst = {e, x, y};
     }
   return worst;

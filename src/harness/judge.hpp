@@ -37,7 +37,10 @@ inline constexpr double judged_share = 0.01;
 // the pixel holds near its centre. `centre` is the reference through the
 // pixel's centre; `low` and `high` the least and greatest per channel of it and
 // of four rays bracket_shift beside it (twice that grid). A method's error
-// at a pixel is its distance outside [low, high]; its scale is `centre`.
+// at a pixel is its distance outside [low, high]; its scale is `centre`, or
+// the value in [low, high] nearest the method's where that is larger: beside
+// a light's image a pixel may rightly hold 70 times its centre, and 0.2 %
+// past that was 13 % of the centre (random scene 314).
 inline constexpr double bracket_shift = 1.0 / 128.0;
 struct Reference {
   Image centre, low, high;

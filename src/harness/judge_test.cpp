@@ -89,7 +89,8 @@ TEST(Judge, TrialsUseTheirMeasureAndBound) {
 
 // A silhouette crossing a pixel close to its centre: the shifted rays see 0.2
 // or 1.2 where the centre's sees 1; a method may give either, and is judged
-// by how far it lies outside them, over the centre's value.
+// by how far it lies outside them, over the larger of the centre's value and
+// the bracket's end it passed.
 TEST(Judge, APixelIsJudgedByItsBracket) {
   Image shifted_low = flat(1.0f), shifted_high = flat(1.0f);
   shifted_low.at(1, 1) = glm::vec3(0.2f);
@@ -102,11 +103,25 @@ TEST(Judge, APixelIsJudgedByItsBracket) {
   method.at(1, 1) = glm::vec3(0.25f);
   EXPECT_EQ(worst_pixel(method, r).error, 0.0);
   EXPECT_EQ(rel_rmse(method, r), 0.0);
-  method.at(1, 1) = glm::vec3(1.5f);  // 0.3 above the bracket, over the centre's 1
-  EXPECT_NEAR(worst_pixel(method, r).error, 0.3, 1e-6);
+  method.at(1, 1) = glm::vec3(1.5f);  // 0.3 above the bracket, over its top 1.2
+  EXPECT_NEAR(worst_pixel(method, r).error, 0.25, 1e-6);
+  method.at(1, 1) = glm::vec3(0.1f);  // 0.1 below it, over the centre's 1 (the larger)
+  EXPECT_NEAR(worst_pixel(method, r).error, 0.1, 1e-6);
   const Trial worst{"exact", {}, Trial::Measure::worst_pixel, 0.02, "test"};
   EXPECT_EQ(judge_trial(worst, method, r).detail,
-            "pixel (1, 1): 1.5 against 1 (0.2 to 1.2 near the pixel's centre), error 0.3 > 0.02");
+            "pixel (1, 1): 0.1 against 1 (0.2 to 1.2 near the pixel's centre), error 0.1 > 0.02");
+}
+
+// Beside a light's image (random scene 314): the centre's ray sees 0.118, a
+// shifted one 8.742; a method's 8.757 is 0.17 % past what the pixel may hold,
+// not 13 % of the centre.
+TEST(Judge, APixelBesideALightIsJudgedByTheBrightEnd) {
+  Image centre = flat(1.0f), shifted = flat(1.0f);
+  centre.at(1, 1) = glm::vec3(0.118f);
+  shifted.at(1, 1) = glm::vec3(8.742f);
+  Image method = centre;
+  method.at(1, 1) = glm::vec3(8.757f);
+  EXPECT_NEAR(worst_pixel(method, bracket({centre, shifted})).error, 0.015 / 8.742, 1e-5);
 }
 
 // Shifted rays are traced where a neighbour differs by more than an eighth:
