@@ -1,6 +1,7 @@
 #include "methods/beam_volumes/lit_pyramids.hpp"
 
 #include "methods/beam_volumes/pyramid_sides.hpp"
+#include "methods/kit/light_bounds.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -12,17 +13,6 @@
 
 namespace airlight::methods {
 namespace {
-
-// How far the influence volume's backplate lies from the light: past every
-// point a view ray of this frame can reach before the far plane, in the
-// scene's own scale. An added metre put a millimetre scene's backplate 40
-// times past its far plane, and the pyramids' crossings beside the light were
-// lost (random scenes 307, 496, 741, 854, 904, 939 and 952; 939 fails again
-// at 40 times this distance).
-double backplate_distance(const FrameInputs& inputs, const Light& light) {
-  const double eye_to_light = glm::length(glm::dvec3(light.position) - glm::dvec3(inputs.camera.position));
-  return 2.0 * (eye_to_light + inputs.camera.far);
-}
 
 // Whether x lies inside the pyramid from the light to `base` (the prism toward
 // a directional light): on the light's side of the base's plane and inside
@@ -137,7 +127,7 @@ void LitPyramids::build(const FrameInputs& inputs) {
   for (size_t i = 0; i < inputs.lights.size(); ++i) {
     const Light& light = inputs.lights[i];
     std::vector<geometry::BeamPolygon> scene = polygons;
-    const auto backplate = geometry::influence_backplate(light, backplate_distance(inputs, light));
+    const auto backplate = geometry::influence_backplate(light, kit::beyond_view(inputs.camera, glm::dvec3(light.position)));
     scene.insert(scene.end(), backplate.begin(), backplate.end());
     const geometry::LightOrigin origin = geometry::light_origin(light);
     const double epsilon = geometry::beam_epsilon(origin, polygons);

@@ -66,7 +66,7 @@ std::vector<SettingSpec> gpu_settings(std::vector<SettingSpec> own) {
        "texels per side of each shadow map and cube face: shadow edges are resolved to one texel"},
       {"shadow_bias", T::real, 1.0, 0.0, 16.0, {},
        "shadow-map bias in texels at the point: surfaces move this far along their normal (1 clears "
-       "self-shadowing at every incidence angle with nearest lookup), medium points compare this much nearer"}};
+       "self-shadowing at every incidence angle with nearest lookup); medium points take none"}};
   specs.insert(specs.end(), own.begin(), own.end());
   return specs;
 }

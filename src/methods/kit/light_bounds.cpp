@@ -144,6 +144,10 @@ double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& cam
   return std::min(far, 1.01 * deepest);
 }
 
+double beyond_view(const Camera& camera, const glm::dvec3& light) {
+  return 2.0 * (glm::length(light - glm::dvec3(camera.position)) + camera.far);
+}
+
 }  // namespace airlight::kit
 
 namespace airlight::kit {

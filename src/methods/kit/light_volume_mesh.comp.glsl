@@ -106,18 +106,6 @@ float clamp_depth(float stored) {
 #endif
 }
 
-// The farthest depth a texel holding `stored` calls lit (scene.glsl's
-// shadow_visibility: x is lit while its distance r satisfies
-// r − b·(k·r + c)/S ≤ stored, the bias b in texels of size (k·r + c)/S).
-float lit_limit(float stored) {
-  float b = frame.shadow_bias / frame.shadow_resolution;
-#if VOLUME_KIND == KIND_DIRECTIONAL
-  return stored + b * LIGHT.texel_constant;
-#else
-  return (stored + b * LIGHT.texel_constant) / max(1.0 - b * LIGHT.texel_per_distance, 1e-6);
-#endif
-}
-
 #if VOLUME_KIND == KIND_CUBE
 #include "methods/kit/cube_faces.glsl"
 // Texel `texel` of a face, sampled at its centre (nearest: exactly that texel).
@@ -247,10 +235,10 @@ vec3 grid_vertex(int layer, ivec2 v) { return imageLoad(vertices, ivec3(v, layer
 
 #if DEPTH_MODE == DEPTH_TEXEL
 // The depth of cell c of face `face`: as far as the shadow test calls points
-// lit (lit_limit, in float as it compares) through the texel under the cell's
-// centre (texel c when R = S).
+// lit (scene.glsl's shadow_visibility: up to the stored depth, no bias)
+// through the texel under the cell's centre (texel c when R = S).
 float cell_depth(int face, ivec2 c) {
-  return clamp_depth(lit_limit(stored_depth(face, min((2 * c + 1) * map_size / (2 * grid), ivec2(map_size - 1)))));
+  return clamp_depth(stored_depth(face, min((2 * c + 1) * map_size / (2 * grid), ivec2(map_size - 1))));
 }
 
 // Grid vertex v's ray at `depth`. `precise`: the cells and walls that share
@@ -393,19 +381,31 @@ float cos_widest_cell() {
 #endif
 }
 
-// An outer vertex's distance, from the farthest stored depth of its cells:
-// moved past where the shadow test stops calling points lit (lit_limit), and,
-// for a light at a point, past the chords between a cell's corners: a point of
-// a triangle whose corners lie at distances ≥ D, at angles ≤ α apart as seen
+// One texel past `stored`, a texel's size there being (k·r + c)/S: the shell's
+// outer grid keeps that thickness where its cells' texels agree, so its
+// surface stays a closed two-manifold (inner and outer would meet there); a
+// shell that grows stays conservative.
+float past_texel(float stored) {
+  float b = 1.0 / frame.shadow_resolution;
+#if VOLUME_KIND == KIND_DIRECTIONAL
+  return stored + b * LIGHT.texel_constant;
+#else
+  return (stored + b * LIGHT.texel_constant) / max(1.0 - b * LIGHT.texel_per_distance, 1e-6);
+#endif
+}
+
+// An outer vertex's distance, from the farthest stored depth of its cells
+// (where the shadow test stops calling points lit): a texel past it, and for a
+// light at a point past the chords between a cell's corners: a point of a
+// triangle whose corners lie at distances ≥ D, at angles ≤ α apart as seen
 // from the light, is at distance ≥ D·cos α (its projection on one corner's
 // direction). An inner vertex needs neither: a triangle whose corners lie
-// within distance D of the light lies within it (the ball is convex), and the
-// bias only moves the boundary out.
+// within distance D of the light lies within it (the ball is convex).
 float beyond_lit(float stored) {
 #if VOLUME_KIND == KIND_DIRECTIONAL
-  return lit_limit(stored);
+  return past_texel(stored);
 #else
-  return lit_limit(stored) / cos_widest_cell();
+  return past_texel(stored) / cos_widest_cell();
 #endif
 }
 

@@ -4,6 +4,7 @@
 #include "core/warning.hpp"
 #include "geometry/camera.hpp"
 #include "gpu/program.hpp"
+#include "methods/kit/light_bounds.hpp"
 #include "methods/kit/memory_needs.hpp"
 #include "methods/kit/shadow_projection.hpp"
 
@@ -196,13 +197,13 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
   const Light& l = in.lights[static_cast<size_t>(light)];
   const glm::dvec3 eye = geometry::camera_basis(in.camera).position;
   const double far = in.camera.far;
-  // Depths beyond every point the frame can see (beam_volumes' backplate distance).
-  double far_depth = 2.0 * (glm::length(eye - glm::dvec3(l.position)) + far) + 1.0, far_ring = far_depth;
-  double cap = 0.0, visible = 2.0 * far + 1.0;
+  // Depths beyond every point the frame can see (beyond_view).
+  double far_depth = beyond_view(in.camera, glm::dvec3(l.position)), far_ring = far_depth;
+  double cap = 0.0, visible = 2.0 * far;
   if (kind == Kind::directional) {
     const double depth = glm::dot(eye, glm::dvec3(glm::normalize(l.direction)));
     far_depth = depth + visible;
-    far_ring = far_depth + 1.0 + 1e-3 * visible;
+    far_ring = far_depth + 1e-3 * visible;
     cap = depth - visible;
   }
   // Cells too wide for one invocation's loop (llvmpipe ends an invocation's

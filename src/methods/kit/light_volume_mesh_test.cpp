@@ -179,25 +179,18 @@ struct Rig {
   glm::dvec3 direction() const { return glm::dvec3(glm::normalize(light().direction)); }
   // The depths the build clamps to (light_volume_mesh.cpp), as the shader holds them (float).
   float far_depth() const {
-    if (kind == Kind::directional) return static_cast<float>(glm::dot(eye(), direction()) + 2.0 * far() + 1.0);
-    return static_cast<float>(2.0 * (glm::length(eye() - glm::dvec3(light().position)) + far()) + 1.0);
+    if (kind == Kind::directional) return static_cast<float>(glm::dot(eye(), direction()) + 2.0 * far());
+    return static_cast<float>(2.0 * (glm::length(eye() - glm::dvec3(light().position)) + far()));
   }
-  float cap_depth() const { return static_cast<float>(glm::dot(eye(), direction()) - 2.0 * far() - 1.0); }
+  float cap_depth() const { return static_cast<float>(glm::dot(eye(), direction()) - 2.0 * far()); }
   double clamped(double v) const {
     const double lo = kind == Kind::directional ? cap_depth() : 0.0;
     return std::min(std::max(v, lo), static_cast<double>(far_depth()));
   }
+  // The texel mesh's depth for a texel: as far as the shadow test calls lit
+  // (scene.glsl's shadow_visibility: the stored depth, no bias).
   double texel(int face, int i, int j) const {
     return clamped(stored[(static_cast<size_t>(face) * size + j) * size + i]);
-  }
-  // The texel mesh's depth for a texel: as far as the shadow test calls lit
-  // (scene.glsl's shadow_visibility at the rig's bias of 1 texel).
-  double lit_texel(int face, int i, int j) const {
-    const double stored_value = stored[(static_cast<size_t>(face) * size + j) * size + i], b = 1.0 / size;
-    if (kind == Kind::point) return clamped(stored_value / (1.0 - 2.0 * b));  // a 90° face: 2 units per unit distance
-    const Projection p = engine_projection(shadow);
-    if (kind == Kind::directional) return clamped(stored_value + b * p.constant);
-    return clamped((stored_value + b * p.constant) / (1.0 - b * p.per_distance));
   }
 
   // The world point whose map NDC is (x, y) and depth (distance from the light, or depth along the travel) d.
@@ -432,7 +425,7 @@ INSTANTIATE_TEST_SUITE_P(Kinds, LightVolume,
 
 // ---- 2. inside and outside by parity -------------------------------------------------------
 
-// Points whose distance lies below every lit depth (Rig::lit_texel) of the 3×3
+// Points whose distance lies below every lit depth (Rig::texel) of the 3×3
 // texels around theirs (by 0.1%: the flat triangles' chord) are inside, above every one
 // outside; points between are left out — which includes every point within a
 // texel of a discontinuity that lies between its two sides. The rest must agree
@@ -459,8 +452,8 @@ std::pair<double, double> neighbourhood(const Rig& rig, int face, int a, int b) 
   double lo = INFINITY, hi = -INFINITY;
   for (int j = std::max(b - 1, 0); j <= std::min(b + 1, rig.size - 1); ++j)
     for (int i = std::max(a - 1, 0); i <= std::min(a + 1, rig.size - 1); ++i) {
-      lo = std::min(lo, rig.lit_texel(face, i, j));
-      hi = std::max(hi, rig.lit_texel(face, i, j));
+      lo = std::min(lo, rig.texel(face, i, j));
+      hi = std::max(hi, rig.texel(face, i, j));
     }
   return {lo, hi};
 }
@@ -617,10 +610,10 @@ TEST_P(LightVolume, EyeCountsAreZeroInsideOneOutsideAndTheMeshsParity) {
 
 // Records per cell: the texel mesh's top at 6k, the shell's inner two at 4k
 // and outer two at 4k + 2, each with the cell's first grid vertex as its
-// first corner (write_oriented keeps it). The texel mesh's top and the shell's
-// outer surface both carry the shadow test's bias, and a directional map's
-// outer surface no chord: where the cell's texel is its farthest the two meet,
-// and where the map says "no occluder" all three are the far depth, at one
+// first corner (write_oriented keeps it). The texel mesh's top sits at its
+// texel's stored depth, the shell's outer surface a texel past the farthest
+// of its cells (a directional map's with no chord), and where the map says
+// "no occluder" the inner and the texel's are the far depth, at one
 // depth that each computes its own way (origin + depth·step against
 // map_point): equal within a few float ulps of coordinates up to 100 m (10⁻⁴ m).
 TEST_P(LightVolume, ShellInnerTexelOuterAreOrderedAtEveryCell) {
@@ -652,11 +645,11 @@ TEST_P(LightVolume, ShellInnerTexelOuterAreOrderedAtEveryCell) {
 }
 
 // A vertex's depth as the header defines it, computed here from the imported
-// map: texel = the lit depth (Rig::lit_texel) of the texel under cell (i, j)'s
+// map: texel = the lit depth (Rig::texel) of the texel under cell (i, j)'s
 // centre, ⌊(2i + 1)·S/(2R)⌋; the shell's inner and outer = the extremes of
-// the texels of the cells around the vertex, the outer moved on by the bias
-// and the chord (at most 3%: one texel of bias is b·k/S = 1.1% of the distance
-// for this 70° map at S = 128, the chord across a 32² cell's diagonal 0.2%). R dividing S, not dividing it,
+// the texels of the cells around the vertex, the outer moved on by a texel
+// and the chord (at most 3%: one texel is k/S = 1.1% of the distance for this
+// 70° map at S = 128, the chord across a 32² cell's diagonal 0.2%). R dividing S, not dividing it,
 // and cells of 65² texels, which the shader reduces in 64² sub-blocks
 // (CELL_SPLIT, atomics). Grid vertex (i, j) is the first corner of cell (i, j)'s
 // first triangle (texel: its top at the cell's depth).
@@ -681,7 +674,7 @@ TEST(LightVolumeDepths, VertexDepthsAreTheirTexelOrTheExtremesOfTheirCells) {
                 }
           const size_t cell = static_cast<size_t>(j) * r + i;
           auto distance = [&](size_t record) { return glm::length(glm::dvec3(records[record].corners[0]) - l); };
-          const double expected = shell ? low : rig.lit_texel(0, (2 * i + 1) * size / (2 * r), (2 * j + 1) * size / (2 * r));
+          const double expected = shell ? low : rig.texel(0, (2 * i + 1) * size / (2 * r), (2 * j + 1) * size / (2 * r));
           const double found = distance(shell ? 4 * cell : 6 * cell);
           worst = std::max(worst, std::abs(found - expected) / expected);
           if (shell) {

@@ -271,12 +271,13 @@ float shadow_test(int i, vec3 x, float bias) {
   return shadow_distance(i, x) - bias <= shadow_occluder(i, x) ? 1.0 : 0.0;
 }
 
-// V(x) for a point in the medium: a depth bias of shadow_bias texels (a point in
-// the medium cannot shadow itself; the bias only keeps points a fraction of a
-// texel in front of a lit, sloped surface lit).
-float shadow_visibility(int i, vec3 x) {
-  return shadow_test(i, x, frame.shadow_bias * shadow_texel(i, x));
-}
+// V(x) for a point in the medium, without bias: a point in the medium cannot
+// shadow itself, and a depth bias lights the medium that far behind every lit
+// surface. Points a fraction of a texel in front of a lit, sloped surface are
+// all it kept lit, at the ends of the rays that reach it; the medium inside a
+// caster the near plane cuts, or behind a quad, is what view rays cross (random
+// scene 851, a sphere across the near plane: rRMSE 0.86 at 1 texel, 0.094 at 0).
+float shadow_visibility(int i, vec3 x) { return shadow_test(i, x, 0.0); }
 
 // V at a surface point with (eye-facing) geometric normal n: the point moves off
 // the surface by shadow_bias texels along n (normal offset). With nearest lookup
