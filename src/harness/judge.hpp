@@ -5,6 +5,7 @@
 #include <airlight/image.hpp>
 #include <airlight/method.hpp>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <string>
 #include <vector>
@@ -35,13 +36,22 @@ inline constexpr double judged_share = 0.01;
 // method rebuilds its view ray in float, so where so small a shift changes the
 // value — a silhouette, a light's image — a method may rightly give anything
 // the pixel holds near its centre. `centre` is the reference through the
-// pixel's centre; `low` and `high` the least and greatest per channel of it and
-// of four rays bracket_shift beside it (twice that grid). A method's error
+// pixel's centre; `low` and `high` the least and greatest per channel of it,
+// of four rays bracket_shift beside it (twice that grid) and of its own ray
+// with the near plane moved by ±near_margin. A method's error
 // at a pixel is its distance outside [low, high]; its scale is `centre`, or
 // the value in [low, high] nearest the method's where that is larger: beside
 // a light's image a pixel may rightly hold 70 times its centre, and 0.2 %
 // past that was 13 % of the centre (random scene 314).
 inline constexpr double bracket_shift = 1.0 / 128.0;
+// The near plane moved either way by near_margin: a rasterizer transforms
+// world coordinates as large as the eye's in float, so a surface within a few
+// of their ulps of the near plane may be clipped or kept (random scene 206: a
+// polyhedron's corner 6 µm from an eye 1 m from the origin, the near plane
+// 5.6 µm, its faces 0.02–0.14 µm past it; the reference kept them, every GPU
+// method clipped them at scattered pixels). 2⁻²⁰ of the eye's distance from
+// the origin is 16 ulps of its coordinates.
+inline double near_margin(const Camera& camera) { return 0x1p-20 * glm::length(glm::dvec3(camera.position)); }
 struct Reference {
   Image centre, low, high;
 };

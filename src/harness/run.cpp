@@ -58,14 +58,18 @@ Reference Harness::reference(const Scene& scene, const Capabilities& capabilitie
   const Scene judged_by = judged_scene(scene, capabilities);
   std::vector<Image> images{reference::render(judged_by, width_, height_).airlight};
   const std::vector<bool> sharp = sharp_pixels(images[0]);
-  for (const glm::dvec2 shift : {glm::dvec2(bracket_shift, 0.0), {-bracket_shift, 0.0}, {0.0, bracket_shift},
-                                 {0.0, -bracket_shift}}) {
-    Image shifted =
-        reference::render(judged_by, width_, height_, {.subpixel = glm::dvec2(0.5) + shift, .pixels = sharp}).airlight;
+  const auto at_sharp_pixels = [&](reference::Settings settings) {
+    settings.pixels = sharp;
+    Image image = reference::render(judged_by, width_, height_, settings).airlight;
     for (size_t i = 0; i < sharp.size(); ++i)
-      if (!sharp[i]) shifted.pixels[i] = images[0].pixels[i];  // smooth there: the centre's value
-    images.push_back(std::move(shifted));
-  }
+      if (!sharp[i]) image.pixels[i] = images[0].pixels[i];  // smooth there: the centre's value
+    images.push_back(std::move(image));
+  };
+  for (const glm::dvec2 shift : {glm::dvec2(bracket_shift, 0.0), {-bracket_shift, 0.0}, {0.0, bracket_shift},
+                                 {0.0, -bracket_shift}})
+    at_sharp_pixels({.subpixel = glm::dvec2(0.5) + shift});
+  for (const double shift : {near_margin(scene.camera), -near_margin(scene.camera)})
+    at_sharp_pixels({.near_shift = shift});
   return bracket(images);
 }
 

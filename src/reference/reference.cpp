@@ -146,11 +146,12 @@ struct Radiance {
   glm::dvec3 airlight{0.0};
 };
 
-// One view ray: the first surface at view depth >= near, else the far plane.
+// One view ray: the first surface at view depth >= near (moved by near_shift), else the far plane.
 Radiance trace(const Context& c, const optics::Ray& ray, Counters& count) {
   const Camera& camera = c.scene.camera;
   const double far = geometry::far_distance(camera, ray.dir);
-  const std::optional<Hit> hit = c.rays.intersect(ray, geometry::near_distance(camera, ray.dir), far);
+  const double near = std::max(geometry::near_distance(camera, ray.dir) + c.settings.near_shift, 0.0);
+  const std::optional<Hit> hit = c.rays.intersect(ray, near, far);
   Radiance radiance;
   if (hit) {
     const SurfacePoint s = surface_point(c.scene, ray, *hit);

@@ -281,8 +281,8 @@ dvec3 lambert(const PlaneScene& p, const FloorPoint& f, double sigma_t, bool lit
          std::exp(-sigma_t * f.eye_distance);
 }
 
-void expect_lambertian_floor(const PlaneScene& p, double sigma_t) {
-  const Images frame = render(p.scene, 64, 48);
+void expect_lambertian_floor(const PlaneScene& p, double sigma_t, const Settings& settings = {}) {
+  const Images frame = render(p.scene, 64, 48, settings);
   EXPECT_EQ(frame.nonfinite, 0);
   for (int j = 0; j < 48; ++j)
     for (int i = 0; i < 64; ++i) {
@@ -340,16 +340,29 @@ TEST(Reference, SphereShadowOnPlaneLeavesAmbientOnlyAndNoSelfShadowing) {
   EXPECT_GT(lit, 1000);
 }
 
-TEST(Reference, GeometryNearerThanTheNearPlaneIsClipped) {
+// A screen across the whole view at view depth `depth` (the camera's near plane: 0.1).
+PlaneScene screen_scene(float depth) {
   PlaneScene p = plane_scene();
-  // A screen across the whole view just in front of the near plane (view depth 0.05).
   Mesh screen = quad_y(0.0, 1.0, Color(1.0f));
   const glm::vec3 c(0, 3, 3), forward = glm::normalize(glm::vec3(0, -1, -1));
   const glm::vec3 right(1, 0, 0), up = glm::cross(right, forward);
-  const glm::vec3 middle = c + 0.05f * forward;
+  const glm::vec3 middle = c + depth * forward;
   screen.positions = {middle - right - up, middle + right - up, middle + right + up, middle - right + up};
   p.scene.meshes.push_back(screen);
-  expect_lambertian_floor(p, 0.0);
+  return p;
+}
+
+TEST(Reference, GeometryNearerThanTheNearPlaneIsClipped) { expect_lambertian_floor(screen_scene(0.05f), 0.0); }
+
+// near_shift moves the near plane along each ray (0.1/cos θ off the axis, up
+// to 0.127 at the corners here): a screen at view depth 0.12 is clipped once
+// it moves 0.05 farther, and one at 0.05 is seen once it moves 0.08 nearer.
+TEST(Reference, NearShiftMovesTheNearPlane) {
+  expect_lambertian_floor(screen_scene(0.12f), 0.0, {.near_shift = 0.05});
+  const Images clipped = render(screen_scene(0.05f).scene, 16, 12);
+  const Images seen = render(screen_scene(0.05f).scene, 16, 12, {.near_shift = -0.08});
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 16; ++i) EXPECT_NE(seen.surface.at(i, j), clipped.surface.at(i, j)) << i << "," << j;
 }
 
 TEST(Reference, GeometryBeyondTheFarPlaneIsNotSeen) {
