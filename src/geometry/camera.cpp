@@ -57,6 +57,11 @@ double near_distance(const Camera& camera, const glm::dvec3& dir) {
   return plane_distance(camera, dir, camera.near);
 }
 
+double corner_distance(const Camera& camera, double aspect, double depth) {
+  const double tan_y = std::tan(0.5 * glm::radians(double(camera.fov_y_deg)));
+  return depth * std::sqrt(1.0 + tan_y * tan_y * (1.0 + aspect * aspect));
+}
+
 double view_depth(const Camera& camera, const glm::dvec3& dir, double t) {
   return t * glm::dot(dir, camera_basis(camera).forward);
 }

@@ -30,6 +30,10 @@ optics::Ray primary_ray(const Camera& camera, int width, int height, double px, 
 double far_distance(const Camera& camera, const glm::dvec3& dir);
 double near_distance(const Camera& camera, const glm::dvec3& dir);
 
+// How far from the eye a point at view depth `depth` may lie in a frame of
+// aspect W/H: along the image's corner rays, depth·√(1 + tan²(fov_y/2)·(1 + aspect²)).
+double corner_distance(const Camera& camera, double aspect, double depth);
+
 // View depth of the point at distance t along unit `dir`: t · dot(dir, forward).
 double view_depth(const Camera& camera, const glm::dvec3& dir, double t);
 

@@ -127,7 +127,7 @@ void LitPyramids::build(const FrameInputs& inputs) {
   for (size_t i = 0; i < inputs.lights.size(); ++i) {
     const Light& light = inputs.lights[i];
     std::vector<geometry::BeamPolygon> scene = polygons;
-    const auto backplate = geometry::influence_backplate(light, kit::beyond_view(inputs.camera, glm::dvec3(light.position)));
+    const auto backplate = geometry::influence_backplate(light, kit::beyond_view(inputs, glm::dvec3(light.position)));
     scene.insert(scene.end(), backplate.begin(), backplate.end());
     const geometry::LightOrigin origin = geometry::light_origin(light);
     const double epsilon = geometry::beam_epsilon(origin, polygons);

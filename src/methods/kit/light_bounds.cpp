@@ -144,8 +144,13 @@ double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& cam
   return std::min(far, 1.01 * deepest);
 }
 
-double beyond_view(const Camera& camera, const glm::dvec3& light) {
-  return 2.0 * (glm::length(light - glm::dvec3(camera.position)) + camera.far);
+double view_reach(const FrameInputs& inputs) {
+  const double aspect = double(inputs.width) / double(std::max(inputs.height, 1));
+  return geometry::corner_distance(inputs.camera, aspect, inputs.camera.far);
+}
+
+double beyond_view(const FrameInputs& inputs, const glm::dvec3& light) {
+  return 2.0 * (glm::length(light - glm::dvec3(inputs.camera.position)) + view_reach(inputs));
 }
 
 }  // namespace airlight::kit

@@ -41,13 +41,18 @@ LightBounds light_bounds(const Light& light, const reference::RayCaster& rays);
 // the planes early there; 1% of the depth is added for it.
 double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& camera, double far);
 
-// A distance from a light at `light` past every point the frame can see
-// before its far plane, in the scene's own scale: 2·(|eye − light| + far)
-// (beam_volumes' backplate, the light volumes' far depth). An added metre
-// put a millimetre scene's backplate 40 times past its far plane, and
-// beam_volumes lost its crossings beside the light (random scenes 307, 496,
-// 741, 854, 904, 939, 952; 939 fails again at 40 times this distance).
-double beyond_view(const Camera& camera, const glm::dvec3& light);
+// How far from the eye the frame sees: its far plane along the image's corner
+// rays (geometry::corner_distance), for a frame of aspect W/H.
+double view_reach(const FrameInputs& inputs);
+
+// A distance from a light at `light` past every point the frame can see, in
+// the scene's own scale: 2·(|eye − light| + view_reach) (beam_volumes'
+// backplate, the light volumes' far depth). An added metre put a millimetre
+// scene's backplate 40 times past its far plane, and beam_volumes lost its
+// crossings beside the light (random scenes 307, 496, 741, 854, 904, 939,
+// 952; 939 fails again at 40 times this distance); the far plane's depth in
+// place of the corner rays' reach put it inside a wide view (seed 391).
+double beyond_view(const FrameInputs& inputs, const glm::dvec3& light);
 
 // Every light's bounds as the frames go by (docs/design.md §3: what a method
 // rebuilds per frame). A light whose position, direction, cone, beam or gobo

@@ -196,10 +196,9 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
   const FrameInputs& in = frame.inputs();
   const Light& l = in.lights[static_cast<size_t>(light)];
   const glm::dvec3 eye = geometry::camera_basis(in.camera).position;
-  const double far = in.camera.far;
   // Depths beyond every point the frame can see (beyond_view).
-  double far_depth = beyond_view(in.camera, glm::dvec3(l.position)), far_ring = far_depth;
-  double cap = 0.0, visible = 2.0 * far;
+  double far_depth = beyond_view(in, glm::dvec3(l.position)), far_ring = far_depth;
+  double cap = 0.0, visible = 2.0 * view_reach(in);
   if (kind == Kind::directional) {
     const double depth = glm::dot(eye, glm::dvec3(glm::normalize(l.direction)));
     far_depth = depth + visible;

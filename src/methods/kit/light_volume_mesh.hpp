@@ -26,9 +26,9 @@
 //   occluder"); the skirt keeps it inside.
 // Where the map holds +∞ or its clear value (no occluder), and wherever it is
 // farther than that, the depth is the frame's backplate distance,
-// 2·(|eye − light| + camera far) (light_bounds.hpp, beyond_view; for a
-// directional light 2·far past the eye's depth), beyond every visible point,
-// so the mesh stays finite and closed.
+// 2·(|eye − light| + the far plane's reach) (light_bounds.hpp, beyond_view;
+// for a directional light twice the reach past the eye's depth), beyond every
+// visible point, so the mesh stays finite and closed.
 //
 // Two meshes (Depth):
 // - texel (light_volume): the shadow map's own steps, exactly the region its

@@ -14,6 +14,7 @@
 // 3. eye counts: 0 inside, 1 outside, and the mesh's parity at random eyes;
 // 4. nearest ≤ texel ≤ farthest at every vertex.
 #include "core/metrics.hpp"
+#include "geometry/camera.hpp"
 #include "gpu/context.hpp"
 #include "gpu/program.hpp"
 #include "gpu/gl.hpp"
@@ -175,14 +176,15 @@ struct Rig {
   }
 
   glm::dvec3 eye() const { return glm::dvec3(scene.camera.position); }
-  double far() const { return scene.camera.far; }
+  // How far from the eye the frame sees: the far plane along the corner rays.
+  double reach() const { return geometry::corner_distance(scene.camera, double(width) / height, scene.camera.far); }
   glm::dvec3 direction() const { return glm::dvec3(glm::normalize(light().direction)); }
   // The depths the build clamps to (light_volume_mesh.cpp), as the shader holds them (float).
   float far_depth() const {
-    if (kind == Kind::directional) return static_cast<float>(glm::dot(eye(), direction()) + 2.0 * far());
-    return static_cast<float>(2.0 * (glm::length(eye() - glm::dvec3(light().position)) + far()));
+    if (kind == Kind::directional) return static_cast<float>(glm::dot(eye(), direction()) + 2.0 * reach());
+    return static_cast<float>(2.0 * (glm::length(eye() - glm::dvec3(light().position)) + reach()));
   }
-  float cap_depth() const { return static_cast<float>(glm::dot(eye(), direction()) - 2.0 * far()); }
+  float cap_depth() const { return static_cast<float>(glm::dot(eye(), direction()) - 2.0 * reach()); }
   double clamped(double v) const {
     const double lo = kind == Kind::directional ? cap_depth() : 0.0;
     return std::min(std::max(v, lo), static_cast<double>(far_depth()));

@@ -1,5 +1,7 @@
 #include "methods/shadow_planes/silhouettes.hpp"
 
+#include "geometry/camera.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -86,10 +88,8 @@ int Silhouettes::count_at(const geometry::LightOrigin& light, const glm::vec3& p
 // thousandth more for rounding.
 namespace {
 double near_reach(const FrameInputs& inputs) {
-  const Camera& camera = inputs.camera;
-  const double tan_y = std::tan(glm::radians(0.5 * double(camera.fov_y_deg)));
   const double aspect = double(inputs.width) / double(std::max(inputs.height, 1));
-  return double(camera.near) * std::sqrt(1.0 + tan_y * tan_y * (1.0 + aspect * aspect)) * 1.001;
+  return geometry::corner_distance(inputs.camera, aspect, inputs.camera.near) * 1.001;
 }
 }  // namespace
 
