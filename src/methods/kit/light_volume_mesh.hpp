@@ -35,8 +35,8 @@
 //   test calls lit. Each cell is a flat quad at its texel's stored depth (the
 //   texel under the cell's centre, texel c when R = S; scene.glsl's
 //   shadow_visibility compares with it, without bias), over exactly the
-//   directions that read that texel, and vertical walls (on the rays between cells) join it to its neighbours at
-//   theirs. A height field through the texels' depths at the cells' corners,
+//   directions that read that texel, and vertical walls (on the rays between
+//   cells) join it to its neighbours at theirs. A height field through the texels' depths at the cells' corners,
 //   as this mesh was before, is half a texel off what the test decides: at
 //   R = S it lost to raymarch at 256 steps on the same map (docs/decisions.md).
 //   A wall where neighbours' depths agree has no area (no crossing); the
@@ -54,7 +54,8 @@
 //   holds it and copied into the others' slots), the closed surface of the
 //   shell between an inner grid, each vertex at the minimum over every
 //   texel of the cells that share it, and an outer grid at their maximum moved
-//   on by a texel and past the chords across a cell (beyond_lit in the shader), joined along the border by strips (a spot's frustum side, a
+//   on by a texel and past the chords across a cell (beyond_lit in the
+//   shader), joined along the border by strips (a spot's frustum side, a
 //   directional map's column side; a cube has no border). Inside the inner
 //   grid every texel says lit, beyond the outer every texel says shadowed: every
 //   point where the shadow map's visibility can change lies in the shell, and a

@@ -651,7 +651,8 @@ TEST_P(LightVolume, ShellInnerTexelOuterAreOrderedAtEveryCell) {
 // centre, ⌊(2i + 1)·S/(2R)⌋; the shell's inner and outer = the extremes of
 // the texels of the cells around the vertex, the outer moved on by a texel
 // and the chord (at most 3%: one texel is k/S = 1.1% of the distance for this
-// 70° map at S = 128, the chord across a 32² cell's diagonal 0.2%). R dividing S, not dividing it,
+// 70° map at S = 128, the chord across a 32² cell's diagonal 0.2%). R
+// dividing S, not dividing it,
 // and cells of 65² texels, which the shader reduces in 64² sub-blocks
 // (CELL_SPLIT, atomics). Grid vertex (i, j) is the first corner of cell (i, j)'s
 // first triangle (texel: its top at the cell's depth).

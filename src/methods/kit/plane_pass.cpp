@@ -24,12 +24,6 @@ std::vector<GLuint> lattice_indices(int n) {
   return indices;
 }
 
-// cos of the angle between the view axis and the ray through an image corner.
-float corner_cos(double tan_half_fov_y, double aspect) {
-  const double t = tan_half_fov_y;
-  return static_cast<float>(1.0 / std::sqrt(1.0 + t * t * (1.0 + aspect * aspect)));
-}
-
 }  // namespace
 
 std::vector<SettingSpec> plane_settings(bool regions) {
@@ -148,7 +142,9 @@ void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   for (GLenum c = 0; c < 8; ++c) glEnable(GL_CLIP_DISTANCE0 + c);
-  cos_edge_ = corner_cos(camera_.tan_half_fov_y, double(frame.width()) / frame.height());
+  // cos of the angle between the view axis and the ray through an image corner
+  cos_edge_ = static_cast<float>(
+      1.0 / geometry::corner_distance(frame.inputs().camera, double(frame.width()) / frame.height(), 1.0));
   glBindTextureUnit(jitter_unit, noise_.id());
   planes_drawn_ = 0.0;
   slab_regions_.reset();

@@ -264,20 +264,18 @@ float shadow_occluder(int i, vec3 x) {
   return texture(shadow_maps, vec3(0.5 * ndc + 0.5, layer)).r;
 }
 
-// V(x) from light i's shadow map, x lit when its distance minus `bias` does not
-// exceed the stored one.
-float shadow_test(int i, vec3 x, float bias) {
+// V(x) for a point in the medium from light i's shadow map: lit when its
+// distance does not exceed the stored one. No depth bias: a point in the
+// medium cannot shadow itself, and a bias lights the medium that far behind
+// every lit surface. Points a fraction of a texel in front of a lit, sloped
+// surface are all it kept lit, at the ends of the rays that reach it; the
+// medium inside a caster the near plane cuts, or behind a quad, is what view
+// rays cross (random scene 851, a sphere across the near plane: rRMSE 0.86 at
+// 1 texel, 0.094 at 0).
+float shadow_visibility(int i, vec3 x) {
   if (light_shadows[i] == SHADOW_NONE) return 1.0;
-  return shadow_distance(i, x) - bias <= shadow_occluder(i, x) ? 1.0 : 0.0;
+  return shadow_distance(i, x) <= shadow_occluder(i, x) ? 1.0 : 0.0;
 }
-
-// V(x) for a point in the medium, without bias: a point in the medium cannot
-// shadow itself, and a depth bias lights the medium that far behind every lit
-// surface. Points a fraction of a texel in front of a lit, sloped surface are
-// all it kept lit, at the ends of the rays that reach it; the medium inside a
-// caster the near plane cuts, or behind a quad, is what view rays cross (random
-// scene 851, a sphere across the near plane: rRMSE 0.86 at 1 texel, 0.094 at 0).
-float shadow_visibility(int i, vec3 x) { return shadow_test(i, x, 0.0); }
 
 // V at a surface point with (eye-facing) geometric normal n: the point moves off
 // the surface by shadow_bias texels along n (normal offset). With nearest lookup
@@ -285,7 +283,7 @@ float shadow_visibility(int i, vec3 x) { return shadow_test(i, x, 0.0); }
 // 0.71·tan θ texels nearer the light along the ray, while the offset gains
 // b/cos θ: b = 1 clears it at every incidence angle θ.
 float surface_visibility(int i, vec3 x, vec3 n) {
-  return shadow_test(i, x + n * (frame.shadow_bias * shadow_texel(i, x)), 0.0);
+  return shadow_visibility(i, x + n * (frame.shadow_bias * shadow_texel(i, x)));
 }
 
 // ---- single scattering (optics::inscatter, docs/design.md §1) -------------------------
