@@ -1,6 +1,7 @@
 #include "core/image_io.hpp"
 
 #include "core/atomic_file.hpp"
+#include "core/file_source.hpp"
 
 #include <airlight/error.hpp>
 
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -78,8 +80,9 @@ void write_pfm(const Image& image, const fs::path& file) {
   if (!out) throw Failure("cannot write " + file.string());
 }
 
-Image read_pfm(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
+// The data must hold every pixel the header announces before any is allocated.
+Image read_pfm(const std::string& bytes, const fs::path& file) {
+  std::istringstream in(bytes);
   std::string magic;
   int width = 0, height = 0;
   double scale = 0;
@@ -87,20 +90,33 @@ Image read_pfm(const fs::path& file) {
       width > 65536 || height > 65536 || scale == 0 || !std::isfinite(scale))
     unreadable(file, "not an RGB PFM file (expected \"PF\", width, height, scale)");
   in.get();  // the single whitespace byte after the scale
+  const size_t row_bytes = static_cast<size_t>(width) * 3 * 4;
+  const auto start = static_cast<size_t>(in.tellg());
+  if (in.eof() || (bytes.size() - start) / row_bytes < static_cast<size_t>(height))
+    unreadable(file, "PFM data ends early");
   const bool big_endian = scale > 0;
   Image image(width, height);
-  std::vector<std::uint32_t> row(static_cast<size_t>(width) * 3);
   for (int y = height - 1; y >= 0; --y) {
-    if (!in.read(reinterpret_cast<char*>(row.data()), static_cast<std::streamsize>(row.size() * 4)))
-      unreadable(file, "PFM data ends early");
+    const char* row = bytes.data() + start + static_cast<size_t>(height - 1 - y) * row_bytes;
     for (int x = 0; x < width; ++x)
       for (int c = 0; c < 3; ++c) {
-        std::uint32_t bits = row[3 * x + c];
+        std::uint32_t bits;
+        std::memcpy(&bits, row + 4 * (3 * x + c), 4);
         if (big_endian) bits = __builtin_bswap32(bits);
         image.at(x, y)[c] = std::bit_cast<float>(bits);
       }
   }
   return image;
+}
+
+// PNG and EXR data are compressed: their size does not bound their pixels, which the
+// header gives; a gobo needs far fewer (docs/decisions.md "Fuzzing").
+constexpr long long max_decoded_pixels = 4096LL * 4096;
+
+void check_pixels(long long width, long long height, const fs::path& file) {
+  if (width * height > max_decoded_pixels)
+    unreadable(file, "the image is " + std::to_string(width) + "x" + std::to_string(height) +
+                         " pixels, more than the " + std::to_string(max_decoded_pixels) + " (4096x4096) airlight reads");
 }
 
 // stb_image's failure reason in plain words; the rarer ones, all some damage to
@@ -116,14 +132,21 @@ std::string png_failure(const std::string& reason) {
   return it != plain.end() ? it->second : "the PNG data is damaged (stb_image: " + reason + ")";
 }
 
-Image read_png(const fs::path& file) {
+// PNG only: stb_image would decode a dozen other formats behind a .png name.
+Image read_png(const std::string& bytes, const fs::path& file) {
+  static constexpr std::string_view signature = "\x89PNG\r\n\x1a\n";
+  if (!bytes.starts_with(signature)) unreadable(file, png_failure("unknown image type"));
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = static_cast<int>(std::min<size_t>(bytes.size(), INT_MAX));
   int width = 0, height = 0, channels = 0;
-  std::uint8_t* data = stbi_load(file.c_str(), &width, &height, &channels, 3);
-  if (!data) unreadable(file, png_failure(stbi_failure_reason()));
+  if (!stbi_info_from_memory(data, size, &width, &height, &channels)) unreadable(file, png_failure(stbi_failure_reason()));
+  check_pixels(width, height, file);
+  std::uint8_t* pixels = stbi_load_from_memory(data, size, &width, &height, &channels, 3);
+  if (!pixels) unreadable(file, png_failure(stbi_failure_reason()));
   Image image(width, height);
   for (size_t i = 0; i < image.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) image.pixels[i][c] = srgb_to_linear(data[3 * i + c] / 255.0f);
-  stbi_image_free(data);
+    for (int c = 0; c < 3; ++c) image.pixels[i][c] = srgb_to_linear(pixels[3 * i + c] / 255.0f);
+  stbi_image_free(pixels);
   return image;
 }
 
@@ -148,12 +171,37 @@ void write_exr(const Image& image, const fs::path& file) {
   }
 }
 
-Image read_exr(const fs::path& file) {
+// OpenEXR reads through this from the bytes in memory.
+class MemoryStream : public Imf::IStream {
+public:
+  MemoryStream(const std::string& bytes, const fs::path& file) : Imf::IStream(file.c_str()), bytes_(bytes) {}
+
+  bool read(char c[], int n) override {
+    if (n < 0 || static_cast<size_t>(n) > bytes_.size() - position_) throw std::runtime_error("the file is cut short");
+    std::memcpy(c, bytes_.data() + position_, static_cast<size_t>(n));
+    position_ += static_cast<size_t>(n);
+    return position_ < bytes_.size();
+  }
+  std::uint64_t tellg() override { return position_; }
+  void seekg(std::uint64_t position) override { position_ = std::min<std::uint64_t>(position, bytes_.size()); }
+
+private:
+  const std::string& bytes_;
+  size_t position_ = 0;
+};
+
+Image read_exr(const std::string& bytes, const fs::path& file) {
+  // OpenEXR sizes its tables from the header as it opens the file: the header is refused
+  // first when a side exceeds a render's largest (16384), then by the pixel count.
+  static const bool bounded = (Imf::Header::setMaxImageSize(16384, 16384), Imf::Header::setMaxTileSize(16384, 16384), true);
+  (void)bounded;
   try {
-    Imf::InputFile in(file.c_str());
+    MemoryStream stream(bytes, file);
+    Imf::InputFile in(stream);
     const auto window = in.header().dataWindow();
-    const int width = window.max.x - window.min.x + 1, height = window.max.y - window.min.y + 1;
-    Image image(width, height);
+    const long long width = 1LL + window.max.x - window.min.x, height = 1LL + window.max.y - window.min.y;
+    check_pixels(width, height, file);
+    Image image(static_cast<int>(width), static_cast<int>(height));
     Imf::FrameBuffer frame;
     char* origin = reinterpret_cast<char*>(image.pixels.data()) -
                    (static_cast<std::ptrdiff_t>(window.min.y) * width + window.min.x) * sizeof(glm::vec3);
@@ -163,6 +211,8 @@ Image read_exr(const fs::path& file) {
     in.setFrameBuffer(frame);
     in.readPixels(window.min.y, window.max.y);
     return image;
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     unreadable(file, std::string("cannot read EXR: ") + e.what());
   }
@@ -181,13 +231,17 @@ void write_image(const Image& image, const fs::path& file, const ToneMap& tone) 
   });
 }
 
+Image decode_image(const std::string& bytes, const fs::path& file) {
+  const std::string ext = extension(file);
+  if (ext == ".png") return read_png(bytes, file);
+  if (ext == ".pfm") return read_pfm(bytes, file);
+  if (ext == ".exr") return read_exr(bytes, file);
+  throw InputError(file.string(), "", "unknown image format '" + ext + "' (use .png, .pfm or .exr)");
+}
+
 Image read_image(const fs::path& file) {
   if (!fs::is_regular_file(file)) throw InputError(file.string(), "", "no such file");
-  const std::string ext = extension(file);
-  if (ext == ".png") return read_png(file);
-  if (ext == ".pfm") return read_pfm(file);
-  if (ext == ".exr") return read_exr(file);
-  throw InputError(file.string(), "", "unknown image format '" + ext + "' (use .png, .pfm or .exr)");
+  return decode_image(disk_files().read(file), file);
 }
 
 }  // namespace airlight

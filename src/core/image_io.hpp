@@ -15,6 +15,9 @@ void write_image(const Image& image, const std::filesystem::path& file, const To
 // Reads .png (sRGB decoded to linear), .pfm, .exr. Throws InputError (file, "") when
 // the file is missing, unreadable or malformed.
 Image read_image(const std::filesystem::path& file);
+// The same from the file's bytes, by the extension of `file`, which names it in errors. A
+// PNG or EXR of more than 4096×4096 pixels is refused before it is decoded.
+Image decode_image(const std::string& bytes, const std::filesystem::path& file);
 
 // sRGB transfer functions (IEC 61966-2-1), per channel.
 float linear_to_srgb(float linear);

@@ -13,6 +13,7 @@
 
 #include <airlight/error.hpp>
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -425,6 +426,7 @@ private:
 // tinygltf's own ExpandFilePath does (wordexp).
 struct Folder {
   std::filesystem::path root;  // the glTF's folder, absolute and normal
+  const FileSource& files;
   std::string outside;         // the first path refused, relative to root
 };
 
@@ -436,14 +438,24 @@ bool inside(Folder& folder, const std::string& path) {
   return false;
 }
 
-bool file_exists(const std::string& path, void* folder) {
-  return inside(*static_cast<Folder*>(folder), path) && tinygltf::FileExists(path, nullptr);
+bool file_exists(const std::string& path, void* data) {
+  Folder& folder = *static_cast<Folder*>(data);
+  return inside(folder, path) && folder.files.exists(path);
 }
 
 std::string expand_path(const std::string& path, void*) { return path; }
 
-bool read_file(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* folder) {
-  return inside(*static_cast<Folder*>(folder), path) && tinygltf::ReadWholeFile(out, error, path, nullptr);
+bool read_file(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* data) {
+  Folder& folder = *static_cast<Folder*>(data);
+  if (!inside(folder, path)) return false;
+  try {
+    const std::string bytes = folder.files.read(path);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const InputError& e) {
+    *error += e.what();
+    return false;
+  }
 }
 
 bool write_file(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
@@ -476,18 +488,23 @@ bool is_gltf_file(const std::filesystem::path& file) {
   return ext == ".gltf" || ext == ".glb";
 }
 
-Scene load_gltf(const std::filesystem::path& file) {
+Scene load_gltf(const std::filesystem::path& file, const FileSource& files) {
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);
-  Folder folder{std::filesystem::absolute(file).parent_path().lexically_normal(), ""};
+  Folder folder{std::filesystem::absolute(file).parent_path().lexically_normal(), files, ""};
   loader.SetFsCallbacks({file_exists, expand_path, read_file, write_file, &folder});
   loader.SetStoreOriginalJSONForExtrasAndExtensions(true);
   tinygltf::Model model;
   std::string error, warning;  // warnings concern what airlight ignores (images, unknown extensions)
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  const bool ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
-                                : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
+  const std::string bytes = files.read(file);
+  const auto size = static_cast<unsigned int>(std::min<size_t>(bytes.size(), UINT_MAX));
+  const bool ok = ext == ".glb"
+                      ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                                    reinterpret_cast<const unsigned char*>(bytes.data()), size,
+                                                    folder.root.string())
+                      : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), size, folder.root.string());
   if (!folder.outside.empty())
     throw InputError(file.string(), "uri",
                      "\"" + folder.outside + "\" is outside the file's folder: airlight reads only the files "

@@ -1,5 +1,7 @@
 #pragma once
 // Internal to the scene layer: glTF 2.0 scenes (docs/scene-format.md "glTF scenes").
+#include "core/file_source.hpp"
+
 #include <airlight/scene.hpp>
 #include <filesystem>
 
@@ -22,7 +24,7 @@ bool is_gltf_file(const std::filesystem::path& file);
 
 // The default scene of a .gltf or .glb file: its meshes, lights and first camera placed by
 // their nodes, and the fog of the scene's extras.airlight. Throws InputError naming the file
-// and the element.
-Scene load_gltf(const std::filesystem::path& file);
+// and the element. The file and those it names are read from `files`.
+Scene load_gltf(const std::filesystem::path& file, const FileSource& files = disk_files());
 
 }  // namespace airlight::scene_gltf

@@ -11,7 +11,6 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <glm/geometric.hpp>
 #include <map>
 #include <sstream>
@@ -204,7 +203,7 @@ void warn_lines_and_points(const std::vector<tinyobj::shape_t>& shapes, const st
 
 // Materials play no part (an object's albedo comes from the scene file), so a
 // usemtl whose .mtl file is missing is no error; the warning says it is ignored.
-void warn_missing_materials(const std::string& text, const std::filesystem::path& file) {
+void warn_missing_materials(const std::string& text, const std::filesystem::path& file, const FileSource& files) {
   std::istringstream lines(text);
   std::vector<std::string> libraries;
   bool uses = false, found = false;
@@ -216,7 +215,7 @@ void warn_missing_materials(const std::string& text, const std::filesystem::path
     if (tag != "mtllib") continue;
     for (std::string name; words >> name;) {
       libraries.push_back(name);
-      found = found || std::filesystem::exists(file.parent_path() / name);
+      found = found || files.exists(file.parent_path() / name);
     }
   }
   if (uses && !found)
@@ -225,23 +224,15 @@ void warn_missing_materials(const std::string& text, const std::filesystem::path
                             "): materials are ignored, the object's albedo applies");
 }
 
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), "", "cannot read the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 }  // namespace
 
-Mesh load_obj(const std::filesystem::path& file) {
+Mesh load_obj(const std::filesystem::path& file, const FileSource& files) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // faces keep the numbers the file gives them
   config.vertex_color = false;
   tinyobj::ObjReader reader;
   // From a string with no material text: materials play no part here.
-  const std::string text = read_text(file);
+  const std::string text = files.read(file);
   check_vertex_text(text, file.string());
   if (!reader.ParseFromString(text, "", config)) {
     throw InputError(file.string(), "", "malformed OBJ: " + reader.Error());
@@ -263,7 +254,7 @@ Mesh load_obj(const std::filesystem::path& file) {
   }
   Mesh mesh = builder.finish(file.filename().string());
   warn_lines_and_points(reader.GetShapes(), file.string());
-  warn_missing_materials(text, file);
+  warn_missing_materials(text, file, files);
   return mesh;
 }
 

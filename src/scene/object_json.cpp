@@ -73,11 +73,11 @@ Mesh read_shape(JsonObject& o) {
   return it->second(o);
 }
 
-Mesh read_mesh_file(JsonObject& o, const std::filesystem::path& base_dir) {
+Mesh read_mesh_file(JsonObject& o, const SceneFiles& files) {
   const JsonNode mesh = o.required("mesh");
-  const std::filesystem::path file = base_dir / mesh.string();
-  if (!std::filesystem::is_regular_file(file)) mesh.fail("file not found: " + file.string());
-  return load_obj(file);
+  const std::filesystem::path file = files.dir / mesh.string();
+  if (!files.source.exists(file)) mesh.fail("file not found: " + file.string());
+  return load_obj(file, files.source);
 }
 
 Transform read_transform(JsonObject& o) {
@@ -127,10 +127,10 @@ void check_placed(const Mesh& mesh, const JsonNode& node) {
 
 }  // namespace
 
-Mesh read_object(const JsonNode& node, const std::filesystem::path& base_dir) {
+Mesh read_object(const JsonNode& node, const SceneFiles& files) {
   JsonObject o(node);
   if (o.has("shape") == o.has("mesh")) node.fail("needs exactly one of \"shape\" and \"mesh\"");
-  Mesh mesh = o.has("shape") ? read_shape(o) : read_mesh_file(o, base_dir);
+  Mesh mesh = o.has("shape") ? read_shape(o) : read_mesh_file(o, files);
   mesh.outer_box = read_bounding_box(o, "outer_box", check_outer, mesh);
   mesh.inner_box = read_bounding_box(o, "inner_box", check_inner, mesh);
   const Transform transform = read_transform(o);

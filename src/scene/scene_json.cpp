@@ -14,7 +14,6 @@
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
 #include <map>
-#include <sstream>
 
 namespace airlight {
 namespace scene_json {
@@ -155,12 +154,12 @@ Volume read_volume(const JsonNode& node) {
 // ---- lights ----------------------------------------------------------------
 
 // An image's errors name the image file alone; here they name the light's key too.
-std::shared_ptr<const Image> read_gobo(const JsonNode& node, const std::filesystem::path& base_dir) {
-  const std::filesystem::path file = base_dir / node.string();
-  if (!std::filesystem::is_regular_file(file)) node.fail("file not found: " + file.string());
+std::shared_ptr<const Image> read_gobo(const JsonNode& node, const SceneFiles& files) {
+  const std::filesystem::path file = files.dir / node.string();
+  if (!files.source.exists(file)) node.fail("file not found: " + file.string());
   std::shared_ptr<const Image> image;
   try {
-    image = std::make_shared<const Image>(read_image(file));
+    image = std::make_shared<const Image>(decode_image(files.source.read(file), file));
   } catch (const InputError& e) {
     node.fail("cannot read " + file.string() + ": " + e.message());
   }
@@ -178,7 +177,7 @@ void read_gobo_up(JsonObject& o, Light& light) {
   }
 }
 
-void read_spot(JsonObject& o, Light& light, const std::filesystem::path& base_dir) {
+void read_spot(JsonObject& o, Light& light, const SceneFiles& files) {
   const auto [position, direction, intensity, cone_deg] =
       o.required_all({"position", "direction", "intensity", "cone_deg"});
   light.position = position.vec3();
@@ -191,7 +190,7 @@ void read_spot(JsonObject& o, Light& light, const std::filesystem::path& base_di
     // The gobo spans tan(cone_deg): it needs a cone narrower than a hemisphere.
     if (!(light.cone_deg < 90.0f))
       o.fail("cone_deg", "must be < 90 for a spot with a gobo, got " + number_text(light.cone_deg));
-    light.gobo = read_gobo(*gobo, base_dir);
+    light.gobo = read_gobo(*gobo, files);
   }
 }
 
@@ -209,7 +208,7 @@ Beam read_beam(const JsonNode& node) {
 
 // A directional light lights all of space, or only its beam; gobo_up orients
 // the beam, and a gobo spans the beam's aperture, so both need a beam.
-void read_directional(JsonObject& o, Light& light, const std::filesystem::path& base_dir) {
+void read_directional(JsonObject& o, Light& light, const SceneFiles& files) {
   const auto [direction, irradiance] = o.required_all({"direction", "irradiance"});
   light.direction = direction.direction();
   light.irradiance = irradiance.color(at_least(0));
@@ -219,10 +218,10 @@ void read_directional(JsonObject& o, Light& light, const std::filesystem::path& 
   if (!beam) return;
   light.beam = read_beam(*beam);
   read_gobo_up(o, light);
-  if (const auto gobo = o.optional("gobo")) light.gobo = read_gobo(*gobo, base_dir);
+  if (const auto gobo = o.optional("gobo")) light.gobo = read_gobo(*gobo, files);
 }
 
-Light read_light(const JsonNode& node, const std::filesystem::path& base_dir) {
+Light read_light(const JsonNode& node, const SceneFiles& files) {
   JsonObject o(node);
   const JsonNode type = o.required("type");
   const std::string name = type.string();
@@ -234,10 +233,10 @@ Light read_light(const JsonNode& node, const std::filesystem::path& base_dir) {
     light.intensity = intensity.color(at_least(0));
   } else if (name == "spot") {
     light.type = LightType::spot;
-    read_spot(o, light, base_dir);
+    read_spot(o, light, files);
   } else if (name == "directional") {
     light.type = LightType::directional;
-    read_directional(o, light, base_dir);
+    read_directional(o, light, files);
   } else {
     type.fail("must be \"point\", \"spot\" or \"directional\"");
   }
@@ -255,11 +254,11 @@ std::vector<JsonNode> elements_of(JsonObject& o, std::string_view name) {
 }
 
 // "gltf": the .gltf or .glb file, beside this one, whose scene this one starts from.
-Scene read_gltf_reference(const JsonNode& node, const std::filesystem::path& base_dir) {
-  const std::filesystem::path file = base_dir / node.string();
+Scene read_gltf_reference(const JsonNode& node, const SceneFiles& files) {
+  const std::filesystem::path file = files.dir / node.string();
   if (!scene_gltf::is_gltf_file(file)) node.fail("must name a .gltf or .glb file");
-  if (!std::filesystem::is_regular_file(file)) node.fail("file not found: " + file.string());
-  return scene_gltf::load_gltf(file);
+  if (!files.source.exists(file)) node.fail("file not found: " + file.string());
+  return scene_gltf::load_gltf(file, files.source);
 }
 
 void check_format(JsonObject& o) {
@@ -279,21 +278,17 @@ void read_fog(JsonObject& o, Scene& scene) {
   }
 }
 
-}  // namespace scene_json
-
-using namespace scene_json;
-
-Scene parse_scene(const std::string& json_text, const std::filesystem::path& file) {
+Scene parse(const std::string& json_text, const std::filesystem::path& file, const FileSource& source) {
   const std::string file_name = file.string();
   const Json json = parse_json_text(json_text, file_name);
   const JsonNode root(json, file_name, "");
   JsonObject o(root);
   check_format(o);
-  const std::filesystem::path base_dir = file.parent_path();
+  const SceneFiles files{file.parent_path(), source};
   // With "gltf" the glTF's meshes, lights, camera and extras come first; the JSON's keys
   // replace them, except lights and objects, which add to them (docs/scene-format.md).
   Scene scene;
-  if (const auto gltf = o.optional("gltf")) scene = read_gltf_reference(*gltf, base_dir);
+  if (const auto gltf = o.optional("gltf")) scene = read_gltf_reference(*gltf, files);
   scene.source = file;
   scene.name = file.stem().string();
   if (const auto name = o.optional("name")) scene.name = name->string();
@@ -302,9 +297,15 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
   const auto lights = elements_of(o, "lights");
   const auto objects = elements_of(o, "objects");
   o.finish();  // before loading meshes and images: a misspelt key is the cheaper error
-  for (const JsonNode& n : lights) scene.lights.push_back(read_light(n, base_dir));
-  for (const JsonNode& n : objects) scene.meshes.push_back(read_object(n, base_dir));
+  for (const JsonNode& n : lights) scene.lights.push_back(read_light(n, files));
+  for (const JsonNode& n : objects) scene.meshes.push_back(read_object(n, files));
   return scene;
+}
+
+}  // namespace scene_json
+
+Scene parse_scene(const std::string& json_text, const std::filesystem::path& file) {
+  return scene_json::parse(json_text, file, disk_files());
 }
 
 Scene load_scene(const std::filesystem::path& file) {
@@ -313,9 +314,7 @@ Scene load_scene(const std::filesystem::path& file) {
     throw InputError(file.string(), "", "cannot read the scene file");
   }
   if (scene_gltf::is_gltf_file(file)) return scene_gltf::load_gltf(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scene(text.str(), file);
+  return parse_scene(disk_files().read(file), file);
 }
 
 }  // namespace airlight

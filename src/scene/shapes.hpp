@@ -3,6 +3,8 @@
 // space; the caller applies the object's Transform. Conventions as in
 // mesh_build.hpp: counter-clockwise outward winding, unit normals, no
 // degenerate triangles.
+#include "core/file_source.hpp"
+
 #include <airlight/scene.hpp>
 #include <filesystem>
 #include <glm/vec2.hpp>
@@ -34,7 +36,8 @@ Mesh make_arch(const glm::vec3& center, float inner_radius, float outer_radius, 
 Mesh make_teapot(int segments);
 
 // A Wavefront OBJ file; polygons are fanned into triangles. Throws InputError
-// naming the OBJ file, with keys "face N" / "vertex N" (1-based, file order).
-Mesh load_obj(const std::filesystem::path& file);
+// naming the OBJ file, with keys "face N" / "vertex N" (1-based, file order). Its
+// material files are looked for in `files`.
+Mesh load_obj(const std::filesystem::path& file, const FileSource& files = disk_files());
 
 }  // namespace airlight::scene_mesh
