@@ -35,19 +35,6 @@ struct BenchOptions {
   bool floor = false;          // time the floor (floor.hpp) at each size
 };
 
-// --sweep method.key=v1,v2,...
-struct Sweep {
-  std::string method, key;
-  std::vector<std::string> values;
-};
-
-// One method with one choice of settings: a point of the plot.
-struct Variant {
-  const MethodInfo* method = nullptr;
-  Settings settings;
-  std::string series;  // its line in the plot: the method and the values of all but its last sweep
-};
-
 struct Spread {
   double median = 0.0, min = 0.0, max = 0.0;
 };
@@ -72,86 +59,6 @@ struct Measurement {
 bool frame_pass(const std::string& pass) {
   return pass == "gbuffer" || pass == "depth" || pass == "shadow" || pass == "surface" || pass == "engine" ||
          pass == "readback";
-}
-
-Sweep parse_sweep(const std::string& text) {
-  const auto eq = text.find('=');
-  if (eq == std::string::npos) throw InputError("--sweep", text, "expected method.key=v1,v2,...");
-  const std::string name = text.substr(0, eq);
-  const auto dot = name.find('.');
-  if (dot == std::string::npos) throw InputError("--sweep", name, "name the method: method.key=v1,v2,...");
-  return {name.substr(0, dot), name.substr(dot + 1), split(text.substr(eq + 1), ',')};
-}
-
-std::vector<const MethodInfo*> listed_methods(const std::vector<std::string>& names) {
-  std::vector<const MethodInfo*> methods;
-  for (const auto& name : names) {
-    const MethodInfo& method = find_method(name, "--methods");
-    if (std::count(names.begin(), names.end(), name) > 1) throw InputError("--methods", name, "listed twice");
-    methods.push_back(&method);
-  }
-  return methods;
-}
-
-// "method.key..." names one of the listed methods; `option` and `key` name it in the error.
-void check_listed(const std::string& method, const std::vector<std::string>& listed, const std::string& option,
-                  const std::string& key) {
-  if (std::find(listed.begin(), listed.end(), method) == listed.end())
-    throw InputError(option, key, "method '" + method + "' is not in --methods");
-}
-
-// The --set assignments that belong to `method`: "method.key=value", or
-// "key=value" when it is the only method.
-std::vector<std::string> assignments_for(const std::string& method, const BenchOptions& o) {
-  std::vector<std::string> own;
-  for (const auto& a : o.assignments) {
-    const auto dot = a.find('.'), eq = a.find('=');
-    if (dot == std::string::npos || dot > eq) {
-      if (o.methods.size() > 1) throw InputError("--set", a.substr(0, eq), "name the method: method.key=value");
-      own.push_back(a);
-      continue;
-    }
-    check_listed(a.substr(0, dot), o.methods, "--set", a.substr(0, eq));
-    if (a.substr(0, dot) == method) own.push_back(a);
-  }
-  return own;
-}
-
-// A method's runs: its sweeps (in command-line order) form a cross product, the
-// first varying slowest; every value is validated here, before anything runs.
-std::vector<Variant> method_variants(const MethodInfo& method, const std::vector<Sweep>& sweeps,
-                                     const BenchOptions& o) {
-  std::vector<const Sweep*> own;
-  for (const auto& sweep : sweeps)
-    if (sweep.method == method.name) own.push_back(&sweep);
-  std::vector<Variant> variants{{&method, method_settings(method, assignments_for(method.name, o)), method.name}};
-  for (const auto* sweep : own) {
-    std::vector<Variant> crossed;
-    for (const auto& base : variants)
-      for (const auto& value : sweep->values) {
-        crossed.push_back(base);
-        crossed.back().settings.set(sweep->key, value, "--sweep");
-        if (sweep != own.back()) crossed.back().series += " " + sweep->key + "=" + value;
-      }
-    variants = std::move(crossed);
-  }
-  return variants;
-}
-
-// Every run of every method, in --methods order.
-std::vector<Variant> plan_variants(const BenchOptions& o) {
-  const auto methods = listed_methods(o.methods);
-  std::vector<Sweep> sweeps;
-  for (const auto& text : o.sweeps) {
-    sweeps.push_back(parse_sweep(text));
-    check_listed(sweeps.back().method, o.methods, "--sweep", sweeps.back().method + "." + sweeps.back().key);
-  }
-  std::vector<Variant> planned;
-  for (const auto* method : methods) {
-    const auto variants = method_variants(*method, sweeps, o);
-    planned.insert(planned.end(), variants.begin(), variants.end());
-  }
-  return planned;
 }
 
 std::vector<Scene> load_scenes(const BenchOptions& o) {
@@ -437,7 +344,7 @@ void check_frame_memory(const std::vector<Scene>& scenes, const std::vector<Size
 }
 
 void bench(const BenchOptions& o) {
-  const std::vector<Variant> variants = plan_variants(o);
+  const std::vector<Variant> variants = plan_variants(o.methods, o.sweeps, o.assignments);
   std::vector<Size> sizes;
   for (const auto& text : o.sizes) sizes.push_back(parse_size(text, "--sizes"));
   check_outputs(o, sizes, variants);

@@ -37,12 +37,6 @@ struct CompareOptions {
   ToneOptions tone;
 };
 
-// One entry of --methods: "name" or "name:key=value;key=value".
-struct Entry {
-  const MethodInfo* info = nullptr;
-  Settings settings;
-};
-
 // One image with its costs and its error against the reference.
 struct Result {
   std::string method, settings, changed, note;  // changed: the settings that differ from the defaults
@@ -51,44 +45,6 @@ struct Result {
   bool cached = false;
   ImageError error;
 };
-
-// --set takes "method.key=value" only: with several methods a bare key would be
-// ambiguous, and a method missing from --methods is most likely a typo.
-void check_assignments(const std::vector<std::string>& assignments, const std::string& methods) {
-  const std::vector<std::string> names = split(methods, ',');
-  for (const auto& a : assignments) {
-    const auto dot = a.find('.'), eq = a.find('=');
-    const bool named = dot != std::string::npos && dot < eq;
-    if (!named) throw InputError("--set", a.substr(0, eq), "name the method: --set method.key=value");
-    const std::string method = a.substr(0, dot);
-    const bool listed = std::any_of(names.begin(), names.end(),
-                                    [&](const std::string& n) { return n.substr(0, n.find(':')) == method; });
-    if (!listed) throw InputError("--set", a.substr(0, eq), "the method '" + method + "' is not in --methods");
-  }
-}
-
-// The --set assignments of the entry's method, then the entry's own settings.
-Entry parse_entry(const std::string& text, const std::vector<std::string>& assignments) {
-  const auto colon = text.find(':');
-  const std::string name = text.substr(0, colon);
-  if (name.empty() || (colon != std::string::npos && colon + 1 == text.size()))
-    throw InputError("--methods", text.empty() ? "(empty entry)" : text, "expected NAME or NAME:key=value;key=value, entries separated by ','");
-  Entry entry{&find_method(name, "--methods"), {}};
-  std::vector<std::string> own;
-  for (const auto& a : assignments)
-    if (a.substr(0, a.find('.')) == name) own.push_back(a);
-  entry.settings = method_settings(*entry.info, own);
-  if (colon != std::string::npos)
-    for (const auto& assignment : split(text.substr(colon + 1), ';')) entry.settings.set(assignment, "--methods");
-  return entry;
-}
-
-std::vector<Entry> parse_entries(const CompareOptions& o) {
-  check_assignments(o.assignments, o.methods);
-  std::vector<Entry> entries;
-  for (const auto& text : split(o.methods, ',')) entries.push_back(parse_entry(text, o.assignments));
-  return entries;
-}
 
 // The mean over pixels and channels; a non-finite value is a method's bug.
 double mean_radiance(const Image& image, const std::string& method) {
@@ -127,7 +83,7 @@ Result reference_result(const Scene& scene, Size size, Pass pass, const fs::path
   return r;
 }
 
-Result method_result(const Entry& entry, const Scene& scene, Size size, Pass pass) {
+Result method_result(const MethodEntry& entry, const Scene& scene, Size size, Pass pass) {
   Result r;
   r.method = entry.info->name;
   r.settings = entry.settings.describe();
@@ -184,7 +140,7 @@ void write_sheet(const std::vector<Result>& results, const ToneMap& tone, const 
   write_contact_sheet(entries, scale, tone, file);
 }
 
-void check_outputs(const CompareOptions& o, Size size, const std::vector<Entry>& entries) {
+void check_outputs(const CompareOptions& o, Size size, const std::vector<MethodEntry>& entries) {
   check_output_file("--out", o.out, {".png"});
   if (!o.csv.empty()) check_output_file("--csv", o.csv, {".csv"});
   if (!o.images.empty()) check_output_dir("--images", o.images);
@@ -196,7 +152,7 @@ void check_outputs(const CompareOptions& o, Size size, const std::vector<Entry>&
 }
 
 // The reference at its defaults (what the cache renders with), then the entries.
-std::vector<MethodRun> runs(const std::vector<Entry>& entries) {
+std::vector<MethodRun> runs(const std::vector<MethodEntry>& entries) {
   static const Settings reference_defaults(find_method("reference").settings);
   std::vector<MethodRun> all{{&find_method("reference"), &reference_defaults}};
   for (const auto& e : entries) all.push_back({e.info, &e.settings});
@@ -206,7 +162,7 @@ std::vector<MethodRun> runs(const std::vector<Entry>& entries) {
 void compare(const CompareOptions& o) {
   // Every argument is checked before the first (slow) render.
   const Size size = parse_size(o.size, "--size");
-  const std::vector<Entry> entries = parse_entries(o);
+  const std::vector<MethodEntry> entries = parse_entries(o.methods, o.assignments);
   check_outputs(o, size, entries);
   const Pass pass = o.pass == "composite" ? Pass::composite : Pass::airlight;
   const Scene scene = o.scene.load();
