@@ -38,7 +38,7 @@ MethodInfo planes_info() {
                            {"lattice", T::integer, 0, 0, 512, {}, ""},
                            {"jitter", T::choice, 0, 0, 0, {"none", "white", "blue"}, ""},
                            {"sampling", T::choice, 0, 0, 0, {"lit", "plane"}, ""},
-                           {"clip", T::boolean, 1, 0, 0, {}, ""}});
+                           {"clip", T::boolean, 1, 0, 1, {}, ""}});
 }
 
 }  // namespace airlight::fuzz

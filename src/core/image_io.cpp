@@ -132,10 +132,35 @@ std::string png_failure(const std::string& reason) {
   return it != plain.end() ? it->second : "the PNG data is damaged (stb_image: " + reason + ")";
 }
 
+std::uint32_t big_endian_u32(const std::string& bytes, size_t at) {
+  std::uint32_t v;
+  std::memcpy(&v, bytes.data() + at, 4);
+  return __builtin_bswap32(v);
+}
+
+std::uint32_t little_endian_u32(const std::string& bytes, size_t at) {
+  std::uint32_t v;
+  std::memcpy(&v, bytes.data() + at, 4);
+  return v;
+}
+
+// stb_image grows its buffer to a chunk's stated length before reading the chunk:
+// every chunk up to IEND must lie inside the file first.
+bool png_chunks_inside(const std::string& bytes) {
+  for (size_t at = 8; at + 8 <= bytes.size();) {
+    const std::uint64_t length = big_endian_u32(bytes, at);
+    if (length + 12 > bytes.size() - at) return false;
+    if (bytes.compare(at + 4, 4, "IEND") == 0) return true;
+    at += length + 12;
+  }
+  return false;
+}
+
 // PNG only: stb_image would decode a dozen other formats behind a .png name.
 Image read_png(const std::string& bytes, const fs::path& file) {
   static constexpr std::string_view signature = "\x89PNG\r\n\x1a\n";
   if (!bytes.starts_with(signature)) unreadable(file, png_failure("unknown image type"));
+  if (!png_chunks_inside(bytes)) unreadable(file, png_failure("outofdata"));
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = static_cast<int>(std::min<size_t>(bytes.size(), INT_MAX));
   int width = 0, height = 0, channels = 0;
@@ -190,24 +215,102 @@ private:
   size_t position_ = 0;
 };
 
+// Whether an attribute's value of `size` bytes at `at` is what OpenEXR's reader of its
+// type reads: those read their own layout, whatever the stated size, and some
+// allocate a count the value gives before reading it.
+bool exr_value_fits(const std::string& bytes, const std::string& type, size_t at, std::uint32_t size) {
+  static const std::map<std::string, std::uint32_t> fixed = {
+      {"box2i", 16},    {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"double", 8},
+      {"envmap", 1},    {"float", 4},  {"int", 4},             {"keycode", 28},    {"lineOrder", 1},
+      {"m33f", 36},     {"m33d", 72},  {"m44f", 64},           {"m44d", 128},      {"rational", 8},
+      {"tiledesc", 9},  {"timecode", 8}, {"v2i", 8},           {"v2f", 8},         {"v2d", 16},
+      {"v3i", 12},      {"v3f", 12},   {"v3d", 24},            {"deepImageState", 1}};
+  if (const auto it = fixed.find(type); it != fixed.end()) return size == it->second;
+  const size_t end = at + size;
+  if (type == "chlist") {  // entries of a name and 16 bytes, then an empty name
+    while (at < end && bytes[at] != '\0') {
+      const size_t name_end = bytes.find('\0', at);
+      if (name_end >= end || end - name_end - 1 < 16) return false;
+      at = name_end + 17;
+    }
+    return at + 1 == end;
+  }
+  if (type == "stringvector") {  // strings, each after its length
+    while (at < end) {
+      if (end - at < 4 || little_endian_u32(bytes, at) > end - at - 4) return false;
+      at += 4 + little_endian_u32(bytes, at);
+    }
+    return true;
+  }
+  if (type == "preview")  // width, height, then 4 bytes a pixel
+    return size >= 8 && std::uint64_t(little_endian_u32(bytes, at)) * little_endian_u32(bytes, at + 4) * 4 == size - 8;
+  if (type == "floatvector") return size % 4 == 0;
+  return type != "idmanifest";  // compressed, it states its own size; any other type is read as `size` bytes
+}
+
+// OpenEXR allocates what a header states before it reads it: the header is walked here
+// first, every attribute inside the file and of the size its type reads, a single-part
+// scanline image whose data window has at most max_decoded_pixels (OpenEXR's file
+// layout, "The Header").
+void check_exr_header(const std::string& bytes, const fs::path& file) {
+  const auto fail = [&](const std::string& why) { unreadable(file, "cannot read EXR: " + why); };
+  if (bytes.size() < 8 || little_endian_u32(bytes, 0) != 20000630) fail("not an OpenEXR file");
+  constexpr std::uint32_t tiled = 0x200, long_names = 0x400, deep = 0x800, multipart = 0x1000;
+  const std::uint32_t flags = little_endian_u32(bytes, 4);
+  if (flags & (tiled | deep | multipart)) fail("a tiled, deep or multi-part file: airlight reads single-part scanline images");
+  const size_t longest_name = flags & long_names ? 255 : 31;
+  // A name or type name, null-terminated, no longer than OpenEXR reads; returns its end.
+  const auto name_end = [&](size_t at) {
+    const size_t end = bytes.find('\0', at);
+    if (end == std::string::npos) fail("the header is cut short");
+    if (end - at > longest_name) fail("the header has a name longer than " + std::to_string(longest_name) + " characters");
+    return end;
+  };
+  bool window = false;
+  for (size_t at = 8;;) {
+    const size_t end = name_end(at);
+    if (end == at) break;  // an empty name ends the header
+    const std::string name = bytes.substr(at, end - at);
+    const size_t type_end = name_end(end + 1);
+    const std::string type = bytes.substr(end + 1, type_end - end - 1);
+    if (bytes.size() - type_end < 5) fail("the header is cut short");
+    const std::uint32_t size = little_endian_u32(bytes, type_end + 1);
+    at = type_end + 5;
+    if (size > bytes.size() - at) fail("the header's attribute \"" + name + "\" runs past the end of the file");
+    if (!exr_value_fits(bytes, type, at, size))
+      fail("the header's attribute \"" + name + "\" is not a well-formed " + type);
+    if (name == "dataWindow" && type == "box2i") {
+      const auto coordinate = [&](int i) {
+        return static_cast<long long>(static_cast<std::int32_t>(little_endian_u32(bytes, at + 4 * i)));
+      };
+      check_pixels(std::max(0LL, 1 + coordinate(2) - coordinate(0)), std::max(0LL, 1 + coordinate(3) - coordinate(1)),
+                   file);
+      window = true;
+    }
+    at += size;
+  }
+  if (!window) fail("the header has no dataWindow");
+}
+
 Image read_exr(const std::string& bytes, const fs::path& file) {
-  // OpenEXR sizes its tables from the header as it opens the file: the header is refused
-  // first when a side exceeds a render's largest (16384), then by the pixel count.
-  static const bool bounded = (Imf::Header::setMaxImageSize(16384, 16384), Imf::Header::setMaxTileSize(16384, 16384), true);
+  check_exr_header(bytes, file);
+  // Besides the header's walk, OpenEXR's own check of a side against a render's largest.
+  static const bool bounded = [] {
+    Imf::Header::setMaxImageSize(16384, 16384);
+    return true;
+  }();
   (void)bounded;
   try {
     MemoryStream stream(bytes, file);
     Imf::InputFile in(stream);
     const auto window = in.header().dataWindow();
     const long long width = 1LL + window.max.x - window.min.x, height = 1LL + window.max.y - window.min.y;
-    check_pixels(width, height, file);
     Image image(static_cast<int>(width), static_cast<int>(height));
     Imf::FrameBuffer frame;
-    char* origin = reinterpret_cast<char*>(image.pixels.data()) -
-                   (static_cast<std::ptrdiff_t>(window.min.y) * width + window.min.x) * sizeof(glm::vec3);
+    // Slice::Make places the window's corner, whatever its coordinates, at the first pixel.
     for (int c = 0; c < 3; ++c)
-      frame.insert(exr_channels[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), sizeof(glm::vec3),
-                                               sizeof(glm::vec3) * width, 1, 1, 0.0));
+      frame.insert(exr_channels[c], Imf::Slice::Make(Imf::FLOAT, &image.pixels[0][c], window, sizeof(glm::vec3),
+                                                     sizeof(glm::vec3) * width));
     in.setFrameBuffer(frame);
     in.readPixels(window.min.y, window.max.y);
     return image;
