@@ -3,7 +3,9 @@
 #include <airlight/error.hpp>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -113,6 +115,88 @@ TEST(ImageIo, BadFilesAreInputErrorsNamingTheFile) {
   const fs::path bad_ext = temp_file("x.bmp");
   std::ofstream(bad_ext) << "x";
   expect_input_error(bad_ext, "unknown image format");
+}
+
+std::string decode_error(const std::string& bytes, const std::string& name) {
+  try {
+    decode_image(bytes, name);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "decoded";
+}
+
+std::string u32(std::uint32_t v, bool big_endian = false) {
+  if (big_endian) v = __builtin_bswap32(v);
+  return std::string(reinterpret_cast<const char*>(&v), 4);
+}
+
+// An EXR header of the given version flags and attributes ({name, type, value}).
+std::string exr_header(std::uint32_t flags, const std::vector<std::array<std::string, 3>>& attributes) {
+  std::string bytes = u32(20000630) + u32(2 | flags);
+  for (const auto& [name, type, value] : attributes)
+    bytes += name + '\0' + type + '\0' + u32(std::uint32_t(value.size())) + value;
+  return bytes + '\0';
+}
+
+// PNG and EXR give their size in a header, and a few bytes can claim any size: the
+// pixels are counted before anything is decoded (docs/decisions.md "Fuzzing").
+TEST(ImageIo, MoreThan4096SquaredPixelsAreRefusedBeforeDecoding) {
+  const std::string ihdr = u32(5000, true) + u32(4000, true) + std::string("\x08\x02\0\0\0", 5);
+  const std::string png = std::string("\x89PNG\r\n\x1a\n") + u32(13, true) + "IHDR" + ihdr + u32(0) + u32(0) + "IEND" + u32(0);
+  const std::string message = "the image is 5000x4000 pixels, more than the 16777216 (4096x4096) airlight reads";
+  EXPECT_EQ(decode_error(png, "big.png"), "big.png: " + message);
+  const std::string window = u32(0) + u32(0) + u32(4999) + u32(3999);
+  EXPECT_EQ(decode_error(exr_header(0, {{"dataWindow", "box2i", window}}), "big.exr"),
+            "big.exr: " + message);
+}
+
+TEST(ImageIo, PfmDataShorterThanItsHeaderSaysIsRefusedBeforeAllocating) {
+  EXPECT_EQ(decode_error("PF\n65536 65536\n-1.0\n" + std::string(12, '\0'), "huge.pfm"), "huge.pfm: PFM data ends early");
+}
+
+// OpenEXR allocates what a header states before reading it; what it cannot read is
+// refused first.
+TEST(ImageIo, ExrHeadersAreCheckedBeforeOpenExrReadsThem) {
+  EXPECT_EQ(decode_error(exr_header(0x200, {}), "t.exr"),
+            "t.exr: cannot read EXR: a tiled, deep or multi-part file: airlight reads single-part scanline images");
+  std::string past_end = exr_header(0, {{"comment", "string", "abc"}});
+  past_end[past_end.size() - 9] = '\x7f';  // its size: 0x7f000003 bytes
+  EXPECT_EQ(decode_error(past_end, "p.exr"),
+            "p.exr: cannot read EXR: the header's attribute \"comment\" runs past the end of the file");
+  EXPECT_EQ(decode_error(exr_header(0, {{"dataWindow", "box2i", std::string(12, '\0')}}), "w.exr"),
+            "w.exr: cannot read EXR: the header's attribute \"dataWindow\" is not a well-formed box2i");
+  EXPECT_EQ(decode_error(exr_header(0, {{std::string(32, 'n'), "int", u32(1)}}), "n.exr"),
+            "n.exr: cannot read EXR: the header has a name longer than 31 characters");
+}
+
+// A data window need not start at (0, 0): the pixels land in the image all the same.
+TEST(ImageIo, ExrDataWindowAwayFromTheOriginIsRead) {
+  const Image image = gradient(7, 5);
+  const fs::path file = temp_file("window.exr");
+  write_image(image, file);
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  // The header's attributes, then the offset of the one line block (5 lines, ZIP's 16
+  // a block), which starts with its first line's y.
+  size_t at = 8, window = 0;
+  while (bytes[at] != '\0') {
+    const size_t type = bytes.find('\0', at) + 1, value = bytes.find('\0', type) + 5;
+    if (bytes.compare(at, type - at, std::string("dataWindow", 11)) == 0) window = value;
+    std::uint32_t size = 0;
+    std::memcpy(&size, bytes.data() + value - 4, 4);
+    at = value + size;
+  }
+  std::uint64_t block = 0;
+  std::memcpy(&block, bytes.data() + at + 1, 8);
+  // The window and the block's y moved by (-3, -2).
+  const std::int32_t moved[4] = {-3, -2, 3, 2}, y = -2;
+  std::memcpy(bytes.data() + window, moved, sizeof moved);
+  std::memcpy(bytes.data() + block, &y, 4);
+  const Image back = decode_image(bytes, file);
+  ASSERT_EQ(back.width, 7);
+  ASSERT_EQ(back.height, 5);
+  for (size_t i = 0; i < image.pixels.size(); ++i) EXPECT_EQ(back.pixels[i], image.pixels[i]) << i;
 }
 
 TEST(ImageIo, UnknownOutputExtensionIsAnInputError) {
