@@ -82,6 +82,13 @@ TEST(Bench, BadArgumentsExitTwoNamingOptionAndKey) {
   expect_bad_argument("--methods raymarch,planes --set steps=8", "--set", "steps");
   expect_bad_argument("--methods raymarch --sizes 0x5", "--sizes", "0x5");
   EXPECT_FALSE(fs::exists(work_dir() / "bad.csv"));  // nothing ran
+  // Runs are counted before their settings are: 40 × 30 of them is over bench's 1000.
+  std::string steps = "1", resolutions = "1";
+  for (int i = 2; i <= 40; ++i) steps += "," + std::to_string(i);
+  for (int i = 2; i <= 30; ++i) resolutions += "," + std::to_string(i);
+  EXPECT_EQ(run("--builtin teapot_spot --methods raymarch --sweep raymarch.steps=" + steps +
+                " --sweep raymarch.shadow_resolution=" + resolutions + " --csv " + (work_dir() / "r.csv").string()).err,
+            "airlight: error: --sweep: raymarch.shadow_resolution: the sweeps of raymarch make more than 1000 runs\n");
   // An unknown method lists the known ones, as render's --method does.
   EXPECT_EQ(run("--builtin teapot_spot --methods raymarch,bogus --csv " + (work_dir() / "u.csv").string()).err,
             "airlight: error: --methods: bogus: unknown method (known: reference, raymarch, interleaved, planes, analytic, "

@@ -127,13 +127,24 @@ std::vector<std::string> assignments_for(const std::string& method, const std::v
   return own;
 }
 
+// More runs than anyone times: a few sweeps of a few hundred values each would
+// otherwise hold their product in memory before the first run.
+constexpr size_t max_runs = 1000;
+
 // A method's runs: its sweeps (in command-line order) form a cross product, the
 // first varying slowest; every value is validated here, before anything runs.
 std::vector<Variant> method_variants(const MethodInfo& method, const std::vector<Sweep>& sweeps,
                                      const std::vector<std::string>& own_assignments) {
   std::vector<const Sweep*> own;
-  for (const auto& sweep : sweeps)
-    if (sweep.method == method.name) own.push_back(&sweep);
+  size_t runs = 1;
+  for (const auto& sweep : sweeps) {
+    if (sweep.method != method.name) continue;
+    own.push_back(&sweep);
+    runs *= sweep.values.size();
+    if (runs > max_runs)
+      throw InputError("--sweep", method.name + "." + sweep.key,
+                       "the sweeps of " + method.name + " make more than " + std::to_string(max_runs) + " runs");
+  }
   std::vector<Variant> variants{{&method, method_settings(method, own_assignments), method.name}};
   for (const auto* sweep : own) {
     std::vector<Variant> crossed;
