@@ -298,6 +298,7 @@ private:
       out.albedo = albedo(prim.material, key + ".material");
       out.name = label + (mesh.primitives.size() > 1 ? " primitive " + std::to_string(p) : "");
       out_.meshes.push_back(std::move(out));
+      triangles_.add(out_.meshes.back(), file_, key);
     }
   }
 
@@ -418,6 +419,7 @@ private:
   bool camera_ = false;
   std::set<size_t> visited_;
   size_t untriangulated_ = 0;  // primitives of points or lines, left out
+  scene_mesh::TriangleCount triangles_;
 };
 
 // The files a glTF names (its buffers, its images) are read from its own folder or

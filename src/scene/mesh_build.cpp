@@ -15,6 +15,13 @@
 
 namespace airlight::scene_mesh {
 
+void TriangleCount::add(const Mesh& mesh, const std::string& file, const std::string& key) {
+  triangles_ += mesh.triangles.size();
+  if (triangles_ > max_scene_triangles)
+    throw InputError(file, key, "the scene's meshes have more than " + std::to_string(max_scene_triangles) +
+                                    " triangles in all");
+}
+
 bool is_degenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
   // In double: float cross products of nearly parallel edges lose all digits.
   const glm::dvec3 ab = glm::dvec3(b) - glm::dvec3(a);

@@ -10,6 +10,21 @@
 
 namespace airlight::scene_mesh {
 
+// The most triangles a scene's meshes may have in all. A few bytes of a scene make
+// many (a sphere's segments, an object or a glTF node naming a mesh again), and
+// building them is the loader's longest work: counted as each mesh is added.
+inline constexpr size_t max_scene_triangles = size_t(1) << 21;
+
+// The triangles of a scene's meshes so far.
+class TriangleCount {
+public:
+  // Throws InputError(file, key) once the meshes added have more than max_scene_triangles.
+  void add(const Mesh& mesh, const std::string& file, const std::string& key);
+
+private:
+  size_t triangles_ = 0;
+};
+
 // True when the triangle has (numerically) zero area: its doubled area is below
 // 1e-10 of its longest edge squared, so a normal computed from it is unreliable.
 bool is_degenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);

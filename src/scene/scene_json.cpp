@@ -5,6 +5,7 @@
 #include "scene/gltf_scene.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/light_defaults.hpp"
+#include "scene/mesh_build.hpp"
 #include "scene/scene_parse.hpp"
 
 #include <airlight/error.hpp>
@@ -298,7 +299,12 @@ Scene parse(const std::string& json_text, const std::filesystem::path& file, con
   const auto objects = elements_of(o, "objects");
   o.finish();  // before loading meshes and images: a misspelt key is the cheaper error
   for (const JsonNode& n : lights) scene.lights.push_back(read_light(n, files));
-  for (const JsonNode& n : objects) scene.meshes.push_back(read_object(n, files));
+  scene_mesh::TriangleCount triangles;
+  for (const Mesh& mesh : scene.meshes) triangles.add(mesh, file_name, "gltf");
+  for (const JsonNode& n : objects) {
+    scene.meshes.push_back(read_object(n, files));
+    triangles.add(scene.meshes.back(), file_name, n.key());
+  }
   return scene;
 }
 

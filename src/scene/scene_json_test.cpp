@@ -114,6 +114,15 @@ TEST(SceneJson, ObjectsBecomePlacedMeshes) {
   for (const glm::vec3& n : s.meshes[3].normals) expect_vec(n, {0, 0, 1});
 }
 
+// A few bytes make a million triangles: a sphere of 1024 segments has 1 046 528. The third
+// takes the scene over its limit, counted as each object is added.
+TEST(SceneJson, MoreThanTwoMillionTrianglesInAllAreRefused) {
+  const std::string sphere = R"({"shape": "sphere", "radius": 1, "segments": 1024})";
+  const std::string text = R"({"format": "airlight-scene/1", "objects": [)" + sphere + "," + sphere + "," + sphere + "]}";
+  EXPECT_TRUE(throws_input_error([&] { parse_scene(text, "big.json"); }, "big.json", "objects[2]",
+                                 "the scene's meshes have more than 2097152 triangles in all"));
+}
+
 // The boxes are read in the object's coordinates and carried by its transform: the sphere's
 // outer box, off-centre by 0.1 along x, turned 90° about y (x → −z) and moved by (1, 0, 0).
 TEST(SceneJson, BoundingBoxesMoveWithTheirObject) {
