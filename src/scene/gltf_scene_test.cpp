@@ -111,6 +111,19 @@ TEST(GltfScene, PhotometricUnitsDivideBy683AndTheColourMultiplies) {
   expect_vec(s.lights[1].direction, {0, 0, -1}, 0.0f);   // down the node's −Z
 }
 
+// A node naming a mesh again adds its triangles again: a mesh of 700 000 (one triangle
+// listed over and over) on three nodes is over the scene's limit at the third.
+TEST(GltfScene, NodesNamingAMeshAgainCountTowardTheTriangleLimit) {
+  Gltf g;
+  std::vector<uint16_t> indices;
+  for (int i = 0; i < 700000; ++i) indices.insert(indices.end(), {0, 1, 2});
+  const int mesh = g.mesh(triangle, indices, {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}});  // with normals: quick to read
+  for (int n = 0; n < 3; ++n) g.node({{"mesh", mesh}});
+  const fs::path file = g.write("instanced");
+  EXPECT_TRUE(throws_input_error([&] { load_scene(file); }, file.string(), "meshes[0].primitives[0]",
+                                 "the scene's meshes have more than 2097152 triangles in all"));
+}
+
 TEST(GltfScene, SpotConesMapOuterToConeAndTheirDifferenceToEdge) {
   const double deg = std::numbers::pi / 180.0;
   const scene_gltf::SpotCone cone = scene_gltf::spot_cone(17.5 * deg, 25.0 * deg);
