@@ -477,6 +477,39 @@ std::string plain(std::string text) {
   return text;
 }
 
+// tinygltf copies the JSON into its own values by recursion, a level a call: a text
+// nested thousands deep overflows the stack (docs/decisions.md "Fuzzing"). No glTF
+// needs more than a dozen levels; extras may hold a few more.
+constexpr int max_json_depth = 100;
+
+// The JSON text of a .gltf, or of a .glb's first chunk (its JSON; header §4.4.3).
+std::string_view json_text(const std::string& bytes, bool glb) {
+  if (!glb) return bytes;
+  if (bytes.size() < 20) return {};
+  std::uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return std::string_view(bytes).substr(20, length);
+}
+
+void check_depth(std::string_view json, const std::string& file) {
+  int depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      in_string = c != '"';
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_json_depth)
+        throw InputError(file, "", "the JSON nests deeper than " + std::to_string(max_json_depth) + " levels");
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
 }  // namespace
 
 SpotCone spot_cone(double inner_cone_angle, double outer_cone_angle) {
@@ -501,6 +534,7 @@ Scene load_gltf(const std::filesystem::path& file, const FileSource& files) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   const std::string bytes = files.read(file);
+  check_depth(json_text(bytes, ext == ".glb"), file.string());
   const auto size = static_cast<unsigned int>(std::min<size_t>(bytes.size(), UINT_MAX));
   const bool ok = ext == ".glb"
                       ? loader.LoadBinaryFromMemory(&model, &error, &warning,

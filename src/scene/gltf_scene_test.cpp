@@ -124,6 +124,20 @@ TEST(GltfScene, NodesNamingAMeshAgainCountTowardTheTriangleLimit) {
                                  "the scene's meshes have more than 2097152 triangles in all"));
 }
 
+// tinygltf copies the JSON by recursion: a text nested thousands deep would overflow
+// the stack. 100 levels are read, 101 refused before tinygltf sees them.
+TEST(GltfScene, JsonNestedDeeperThan100LevelsIsRefused) {
+  const auto nested = [](int arrays) {
+    return R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "extras": )" + std::string(arrays, '[') +
+           std::string(arrays, ']') + "}";
+  };
+  const fs::path file = work_dir() / "deep.gltf";
+  std::ofstream(file) << nested(99);
+  EXPECT_NO_THROW(load_scene(file));
+  std::ofstream(file) << nested(100);
+  EXPECT_TRUE(throws_input_error([&] { load_scene(file); }, file.string(), "", "the JSON nests deeper than 100 levels"));
+}
+
 TEST(GltfScene, SpotConesMapOuterToConeAndTheirDifferenceToEdge) {
   const double deg = std::numbers::pi / 180.0;
   const scene_gltf::SpotCone cone = scene_gltf::spot_cone(17.5 * deg, 25.0 * deg);
