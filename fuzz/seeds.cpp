@@ -101,6 +101,41 @@ void gltf_from_glb(const fs::path& out) {
   }
 }
 
+// What the repository's glTF files leave out: a camera, KHR_lights_punctual's three lights,
+// a strip with indices and normals, a material, the fog in extras.airlight, all in one.
+void gltf_features(const fs::path& out) {
+  // Four positions, four normals (+z), four uint16 indices.
+  std::string bin;
+  const float positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, normals[] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+  const std::uint16_t indices[] = {0, 1, 2, 3};
+  bin.append(reinterpret_cast<const char*>(positions), sizeof positions);
+  bin.append(reinterpret_cast<const char*>(normals), sizeof normals);
+  bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
+  const Json json = {
+      {"asset", {{"version", "2.0"}}}, {"scene", 0},
+      {"scenes", {{{"nodes", {0, 1, 2, 3, 4}}, {"extras", {{"airlight", {{"medium", {{"scattering", 0.1}}}}}}}}}},
+      {"nodes",
+       {{{"mesh", 0}, {"rotation", {0, 0, 0, 1}}, {"scale", {2, 2, 2}}},
+        {{"camera", 0}, {"translation", {0, 0, 5}}},
+        {{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"translation", {0, 3, 0}}},
+        {{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 2, 2, 1}}},
+        {{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}, {"children", Json::array()}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 2}, {"mode", 5}, {"material", 0}}}}}}},
+      {"materials", {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.6, 0.4, 1}}}}}}},
+      {"cameras", {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 100}}}}}},
+      {"extensionsUsed", {"KHR_lights_punctual"}},
+      {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 100}, {"color", {1, 0.9, 0.8}}},
+                                                           {{"type", "spot"}, {"intensity", 200}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}},
+                                                           {{"type", "directional"}, {"intensity", 3}}}}}}}},
+      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+                     {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+                     {{"bufferView", 2}, {"componentType", 5123}, {"count", 4}, {"type", "SCALAR"}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 48}},
+                       {{"buffer", 0}, {"byteOffset", 96}, {"byteLength", 8}}}},
+      {"buffers", {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}}}};
+  write(out / "gltf" / "features.gltf", json.dump());
+}
+
 void images(const fs::path& out) {
   Image gradient(3, 2);
   for (size_t i = 0; i < gradient.pixels.size(); ++i) gradient.pixels[i] = glm::vec3(float(i) / 5.0f, 0.5f, 1.0f);
@@ -136,6 +171,7 @@ int main(int argc, char** argv) {
   builtin_scenes(out);
   repository_files(source, out);
   gltf_from_glb(out);
+  gltf_features(out);
   images(out);
   method_options(out);
   return 0;
