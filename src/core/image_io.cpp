@@ -114,7 +114,8 @@ Image read_pfm(const std::string& bytes, const fs::path& file) {
 constexpr long long max_decoded_pixels = 4096LL * 4096;
 
 void check_pixels(long long width, long long height, const fs::path& file) {
-  if (width * height > max_decoded_pixels)
+  // Each side first: an EXR's sides reach 2^32, whose product overflows.
+  if (width > max_decoded_pixels || height > max_decoded_pixels || width * height > max_decoded_pixels)
     unreadable(file, "the image is " + std::to_string(width) + "x" + std::to_string(height) +
                          " pixels, more than the " + std::to_string(max_decoded_pixels) + " (4096x4096) airlight reads");
 }
