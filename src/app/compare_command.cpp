@@ -150,7 +150,7 @@ void measure(Result& r, const Image& reference, float exposure) {
 }
 
 // The columns README.md "## Comparing" documents.
-void write_csv(const std::vector<Result>& results, const std::string& pass, const fs::path& file) {
+void write_csv(const std::vector<Result>& results, const std::string& pass, const std::string& file) {
   std::ostringstream out;
   out << "method,settings,width,height,pass,rel_rmse,max_abs,psnr_db,mean_radiance,reference_mean,prepare_s,render_s,"
          "cached\n";
@@ -161,7 +161,7 @@ void write_csv(const std::vector<Result>& results, const std::string& pass, cons
                   r.error.mean_reference, r.prepare_s, r.render_s, r.cached ? 1 : 0);
     out << csv_field(r.method) << ',' << csv_field(r.settings) << ',' << numbers << '\n';
   }
-  write_text_file(file, out.str());
+  write_csv_output(file, out.str());
 }
 
 // reference.pfm, then <index>_<method>.pfm in the order of --methods.
@@ -186,7 +186,7 @@ void write_sheet(const std::vector<Result>& results, const ToneMap& tone, const 
 
 void check_outputs(const CompareOptions& o, Size size, const std::vector<Entry>& entries) {
   check_output_file("--out", o.out, {".png"});
-  if (!o.csv.empty()) check_output_file("--csv", o.csv, {".csv"});
+  if (!o.csv.empty()) check_csv_output("--csv", o.csv);
   if (!o.images.empty()) check_output_dir("--images", o.images);
   check_output_dir("--cache", o.cache.empty() ? reference::default_cache_dir() : fs::path(o.cache));
   std::vector<const MethodInfo*> methods{&find_method("reference")};
@@ -241,7 +241,7 @@ Run add_compare_command(CLI::App& cli) {
   command->add_option("--set", o->assignments, "method.key=value for every entry of that method (repeatable)");
   command->add_option("--size", o->size, "image size WxH")->capture_default_str();
   command->add_option("--out", o->out, "contact sheet PNG")->required();
-  command->add_option("--csv", o->csv, "CSV of the errors and times (README: Comparing)");
+  command->add_option("--csv", o->csv, "CSV of the errors and times (README: Comparing); -: standard output");
   command->add_option("--images", o->images, "directory for the images as PFM: reference.pfm, <index>_<method>.pfm");
   command->add_option("--pass", o->pass, "what to compare (docs/design.md §6 measures the airlight)")
       ->check(CLI::IsMember({"airlight", "composite"}))

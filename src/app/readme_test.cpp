@@ -124,6 +124,9 @@ const std::map<std::string, Example>& examples() {
         "--out x.png"}},
       {"airlight: error: --sweep: steps: must be in [1, 4096], got 0",
        {{}, "bench --builtin teapot_spot --methods raymarch --sweep raymarch.steps=4,0 --csv b.csv"}},
+      {"airlight: error: --equal-quality: --csv -: its table is written beside the CSV file, as "
+       "FILE-equal-quality.csv, and standard output is no file: give --csv FILE",
+       {{}, "bench --builtin teapot_spot --methods raymarch --csv - --equal-quality 0.05"}},
       {"airlight: warning: mesh.obj: skipped 3 degenerate triangles (zero area)",
        {{{"mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
                       "f 1 1 2\nf 2 3 3\nf 4 4 4\n"},
