@@ -262,9 +262,10 @@ std::vector<Measurement> run_bench(const BenchOptions& o, const std::vector<Scen
       double floor_ns = 0.0;
       if (o.floor) {
         const FloorTimes f = time_floor(size.width, size.height, o.warmup, o.frames);
-        std::fprintf(report_stream(o.csv), "floor %dx%d: full-screen pass %s s, march of %d steps %s s, %s ns per sample\n", size.width,
-                    size.height, number(f.fullscreen_s).c_str(), floor_steps, number(f.march_s).c_str(),
-                    number(f.ns_per_sample).c_str());
+        std::fprintf(report_stream(o.csv),
+                     "floor %dx%d: full-screen pass %s s, march of %d steps %s s, %s ns per sample\n", size.width,
+                     size.height, number(f.fullscreen_s).c_str(), floor_steps, number(f.march_s).c_str(),
+                     number(f.ns_per_sample).c_str());
         floor_ns = f.ns_per_sample;
       }
       for (const auto& variant : variants) {
@@ -478,7 +479,8 @@ Run add_bench_command(CLI::App& cli) {
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
   c->add_option("--frames", o->frames, "timed frames per run")->check(CLI::Range(1, 10000))->capture_default_str();
-  c->add_option("--csv", o->csv, "output: one row per scene, size, method and settings; -: standard output")->required();
+  c->add_option("--csv", o->csv, "output: one row per scene, size, method and settings; -: standard output")
+      ->required();
   c->add_option("--plot", o->plot, "output: rRMSE against frame time, log-log, per scene and size (PNG)");
   c->add_option("--equal-quality", o->equal_quality,
                 "E: per method the cheapest run with rRMSE <= E, timed against brute-force raymarch")

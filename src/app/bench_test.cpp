@@ -116,7 +116,8 @@ TEST(Bench, CsvDashWritesTheSameCsvToStandardOutputAndTheReportToStderr) {
 // The equal-quality table is written beside the CSV file; standard output is
 // none, so the pair is refused before any work.
 TEST(Bench, EqualQualityWithCsvDashIsRefused) {
-  const Outcome o = run("--scene " + tiny_scene().string() + " --methods raymarch --sizes 16x12 --csv - --equal-quality 0.05");
+  const Outcome o =
+      run("--scene " + tiny_scene().string() + " --methods raymarch --sizes 16x12 --csv - --equal-quality 0.05");
   EXPECT_EQ(o.status, 2);
   EXPECT_EQ(o.err,
             "airlight: error: --equal-quality: --csv -: its table is written beside the CSV file, as "

@@ -136,7 +136,8 @@ TEST(Compare, BadArgumentsExitTwoNamingThem) {
 // `--csv -` (README "Pipes"): the same CSV on standard output, and nothing else there.
 TEST(Compare, CsvDashWritesTheSameCsvToStandardOutput) {
   const fs::path csv = work_dir() / "piped.csv";
-  const std::string args = "compare --scene " + scene_file().string() + " --methods reference,raymarch:steps=8 --size 16x12" +
+  const std::string args = "compare --scene " + scene_file().string() +
+                           " --methods reference,raymarch:steps=8 --size 16x12" +
                            " --cache " + (work_dir() / "piped-cache").string() + " --out " +
                            (work_dir() / "piped.png").string() + " --csv ";
   const Outcome file = run(args + csv.string());
@@ -151,7 +152,9 @@ TEST(Compare, CsvDashWritesTheSameCsvToStandardOutput) {
   // The first run rendered the reference into the cache, the second read it.
   EXPECT_EQ(written[1][column(written, "cached")], "0");
   EXPECT_EQ(printed[1][column(printed, "cached")], "1");
-  const auto varies = [](const std::string& name) { return name == "prepare_s" || name == "render_s" || name == "cached"; };
+  const auto varies = [](const std::string& name) {
+    return name == "prepare_s" || name == "render_s" || name == "cached";
+  };
   EXPECT_EQ(without_columns(printed, varies), without_columns(written, varies));
 }
 

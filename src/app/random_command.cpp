@@ -301,7 +301,8 @@ Run add_random_command(CLI::App& cli) {
   command->add_option("--methods", o->methods, "the methods to judge, separated by ',' (default: all)");
   command->add_option("--size", o->size, "image size WxH")->capture_default_str();
   command->add_option("--results", o->results,
-                      "CSV the judgements are appended to, a seed at a time; the seeds it holds are skipped; -: standard output");
+                      "CSV the judgements are appended to, a seed at a time; the seeds it holds are skipped; "
+                      "-: standard output");
   command->add_option("--failures", o->failures, "directory for the failures' shrunk scenes")->capture_default_str();
   command->add_flag("--no-shrink", o->no_shrink, "save a failure's scene as drawn, without shrinking it");
   command->add_option("--known", o->known,
