@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <fstream>
+#include <stdexcept>
 
 namespace airlight {
 

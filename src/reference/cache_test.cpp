@@ -110,8 +110,9 @@ TEST(ReferenceCache, ATruncatedEntryIsRenderedAgainWithAWarning) {
   EXPECT_EQ(body, split_entry(file).second.find('\n') + 1 + 2 * 16 * 12 * 12);
   fs::resize_file(file, fs::file_size(file) - 100);
   expect_rendered_again(scene, dir, first,
-                        "size check failed: " + std::to_string(body - 100) + " bytes after the first line, which says " +
-                            std::to_string(body) + "; rendering the reference again");
+                        "size check failed: " + std::to_string(body - 100) +
+                            " bytes after the first line, which says " + std::to_string(body) +
+                            "; rendering the reference again");
   fs::remove_all(dir);
 }
 
