@@ -449,6 +449,7 @@ void bench(const BenchOptions& o) {
   const std::vector<Scene> scenes = load_scenes(o);
   check_frame_memory(scenes, sizes, variants);
   const std::vector<Measurement> rows = run_bench(o, scenes, sizes, variants);
+  OutputBatch outputs;
   write_measurements(o.csv, rows);
   if (!o.plot.empty()) write_plots(o.plot, rows);
   if (o.equal_quality > 0.0) {
@@ -460,6 +461,7 @@ void bench(const BenchOptions& o) {
     print_table(table);
     write_csv(equal_quality_file(o.csv), table);
   }
+  outputs.commit();
 }
 
 }  // namespace

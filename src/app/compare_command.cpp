@@ -165,10 +165,8 @@ void write_csv(const std::vector<Result>& results, const std::string& pass, cons
 }
 
 // reference.pfm, then <index>_<method>.pfm in the order of --methods.
-void write_images(const std::vector<Result>& results, const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw Failure("cannot create " + dir.string() + ": " + ec.message());
+void write_images(const std::vector<Result>& results, const fs::path& dir, OutputBatch& outputs) {
+  outputs.create_directories(dir);
   write_image(results[0].image, dir / "reference.pfm");
   for (size_t i = 1; i < results.size(); ++i)
     write_image(results[i].image, dir / (std::to_string(i) + "_" + results[i].method + ".pfm"));
@@ -222,9 +220,11 @@ void compare(const CompareOptions& o) {
   }
   const ToneMap tone = o.tone.resolve(results[0].image, "compare");  // auto: measured on the reference
   for (auto& r : results) measure(r, results[0].image, tone.exposure);
-  if (!o.images.empty()) write_images(results, o.images);
+  OutputBatch outputs;
+  if (!o.images.empty()) write_images(results, o.images, outputs);
   if (!o.csv.empty()) write_csv(results, o.pass, o.csv);
   write_sheet(results, tone, o.out);
+  outputs.commit();
 }
 
 }  // namespace
