@@ -13,6 +13,7 @@ namespace {
 
 constexpr int tiles = 10;                    // per side
 constexpr double pitch = 0.24, tile = 0.16;  // metres: gaps of 8 cm between tiles
+constexpr double lift = 8e-5;                // metres: 5× the beam tree's ε here (10⁻⁶ of the scene)
 
 // a×b quads per tile, a ≤ b, as square as `quads` allows.
 std::pair<long, long> tile_grid(long quads) {
@@ -21,16 +22,19 @@ std::pair<long, long> tile_grid(long quads) {
   return {a, quads / a};
 }
 
-// One triangle with its own three vertices (OBJ counts them from 1), shrunk
-// about its centre to `shrink` of its size: no vertex or edge is shared, so
-// welding cannot join the triangles into one surface.
-void triangle(std::string& text, long& count, const glm::dvec2 (&corners)[3]) {
-  constexpr double shrink = 0.8;
+// One triangle with its own three vertices (OBJ counts them from 1), grown
+// about its centre by 30 % and lifted by `lift` metres: it overlaps its
+// neighbours, which lie at the other height, so no vertex or edge is shared
+// (welding cannot join the triangles into one surface) and, seen from the
+// light, no gap opens between them (the lift's parallax stays below the
+// overlap up to 10⁶ triangles).
+void triangle(std::string& text, long& count, const glm::dvec2 (&corners)[3], double lift) {
+  constexpr double grow = 1.3;
   const glm::dvec2 centre = (corners[0] + corners[1] + corners[2]) / 3.0;
   char line[96];
   for (const glm::dvec2& c : corners) {
-    const glm::dvec2 v = centre + shrink * (c - centre);
-    std::snprintf(line, sizeof line, "v %.6f 0 %.6f\n", v.x, v.y);
+    const glm::dvec2 v = centre + grow * (c - centre);
+    std::snprintf(line, sizeof line, "v %.6f %.6f %.6f\n", v.x, lift, v.y);
     text += line;
   }
   std::snprintf(line, sizeof line, "f %ld %ld %ld\n", count + 1, count + 2, count + 3);
@@ -52,8 +56,8 @@ std::string sieve_obj(long triangles) {
       for (long j = 0; j < b; ++j)
         for (long i = 0; i < a; ++i) {
           const glm::dvec2 p = corner + glm::dvec2(i, j) * step, dx(step.x, 0.0), dz(0.0, step.y);
-          triangle(text, vertices, {p, p + dz, p + dx});
-          triangle(text, vertices, {p + dx, p + dz, p + dx + dz});
+          triangle(text, vertices, {p, p + dz, p + dx}, 0.0);
+          triangle(text, vertices, {p + dx, p + dz, p + dx + dz}, lift);
         }
     }
   return text;

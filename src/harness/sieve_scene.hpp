@@ -4,8 +4,10 @@
 // The sieve is 10×10 square tiles with gaps between them, so shafts pass the
 // gaps and the tiles' shadows fall on the floor; each tile is a flat grid of
 // quads, two triangles each, every triangle apart from its neighbours (its own
-// vertices, shrunk to 80 % about its centre): a million separate casters, each
-// edge a silhouette, the light leaking through hairline gaps.
+// vertices, the two of a quad 80 µm apart in height, each grown to overlap the
+// others): a million separate casters, every edge a silhouette, and no light
+// through a tile. (Shrunk instead, leaving hairline gaps, each view ray met
+// thousands of lit gaps: docs/decisions.md "A million triangles".)
 #include <filesystem>
 
 namespace airlight::harness {
