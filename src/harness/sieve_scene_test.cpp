@@ -8,7 +8,8 @@
 
 #include "app/command_test_support.hpp"
 
-#include <cmath>
+#include <fstream>
+#include <string>
 
 namespace airlight::harness {
 namespace {
@@ -28,11 +29,10 @@ TEST(SieveScene, RoundsToWholeTiles) {
   EXPECT_EQ(sieve_triangles(1), 200);
 }
 
-// Both images finite (compare fails on a non-finite value) and lit, and
-// raymarch's mean within 2 % of the reference's: the triangles are smaller than
-// a pixel, so pixel by pixel the images alias (rRMSE 0.13 at 64×48, measured)
-// while the light they let through, the mean, is what a right render keeps
-// (0.7 % off, measured).
+// Both images finite (compare fails on a non-finite value), the reference lit,
+// and raymarch at its defaults within rRMSE 0.05 of it: 0.017 measured, the
+// rest left for its shadow map's texels along the tiles' edges, which move
+// with the rasterizer's rounding.
 TEST(SieveScene, AHundredThousandTrianglesRenderLikeTheReference) {
   const fs::path scene = write_sieve_scene(work_dir(), 100000), csv = work_dir() / "sieve.csv";
   EXPECT_EQ(faces(work_dir() / "sieve.obj"), 100000);
@@ -42,10 +42,8 @@ TEST(SieveScene, AHundredThousandTrianglesRenderLikeTheReference) {
   ASSERT_EQ(o.status, 0) << o.err;
   const Table table = read_csv(csv);
   ASSERT_EQ(table.size(), 3u);
-  const size_t mean = column(table, "mean_radiance"), reference = column(table, "reference_mean");
-  const double lit = std::stod(table[1][reference]);
-  EXPECT_GT(lit, 0.01) << "the reference is black";
-  EXPECT_NEAR(std::stod(table[2][mean]), lit, 0.02 * lit);
+  EXPECT_GT(std::stod(table[1][column(table, "mean_radiance")]), 0.01) << "the reference is black";
+  EXPECT_LT(std::stod(table[2][column(table, "rel_rmse")]), 0.05);
 }
 
 }  // namespace
