@@ -55,7 +55,7 @@ std::vector<MemoryNeed> shadow_planes_memory(const Scene& scene, const Settings&
 
 // max_edges' default: the sieve of separate triangles (scripts/million-triangles),
 // every edge a plane, renders within 120 s and 4 GiB at 256×192 up to about this many.
-constexpr double max_edges = 2e6;
+constexpr double max_edges = 1e6;
 
 MethodInfo shadow_planes_method() {
   using T = SettingSpec::Type;
