@@ -186,10 +186,11 @@ void check_limits(const Scene& scene, const MethodRun& run, bool qualified) {
     const double count = limit.count(scene), bound = run.settings->integer(limit.setting);
     if (count <= bound) continue;
     const std::string name = scene.source.empty() ? scene.name : scene.source.string();
-    throw InputError("--set", (qualified ? run.info->name + "." : std::string()) + setting_text(*run.settings, limit.setting),
-                     "the scene " + name + " has " + std::to_string(static_cast<long long>(count)) + " " + limit.counted + ", more than " +
-                         run.info->name + " takes at this setting (" + limit.why + "); a larger " + limit.setting +
-                         " renders it anyway");
+    const std::string key = (qualified ? run.info->name + "." : std::string()) + setting_text(*run.settings, limit.setting);
+    throw InputError("--set", key,
+                     "the scene " + name + " has " + std::to_string(static_cast<long long>(count)) + " " +
+                         limit.counted + ", more than " + run.info->name + " takes at this setting (" + limit.why +
+                         "); a larger " + limit.setting + " renders it anyway");
   }
 }
 

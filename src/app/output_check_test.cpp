@@ -161,7 +161,8 @@ TEST(OutputCheck, ScenesBeyondAMethodsLimitExitTwoBeforeAnyOpenGl) {
   expect_refused(render + " --method shadow_planes --set max_edges=71",
                  refusal("max_edges=71", "72 caster triangle edges summed over its lights", "shadow_planes", plane_why,
                          "max_edges"));
-  for (const std::string at : {" --method beam_volumes --set max_triangles=24", " --method shadow_planes --set max_edges=72"})
+  for (const std::string at :
+       {" --method beam_volumes --set max_triangles=24", " --method shadow_planes --set max_edges=72"})
     EXPECT_EQ(run_airlight(render + at, no_gl()).status, 1) << at;
   // compare, bench and view check the same, compare and bench with the method's name in front.
   const std::string qualified = refusal("beam_volumes.max_triangles=23", "24 caster triangles summed over its lights",

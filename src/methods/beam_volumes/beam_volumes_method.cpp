@@ -131,7 +131,9 @@ MethodInfo beam_volumes_method() {
             "interval where there is none): issue 25's bound for the exact methods"}},
           {{"max_triangles", "caster triangles summed over its lights",
             "each light's beam tree holds every caster triangle and is built on the CPU every frame",
-            [](const Scene& scene) { return kit::caster_triangles(scene) * static_cast<double>(scene.lights.size()); }}}};
+            [](const Scene& scene) {
+              return kit::caster_triangles(scene) * static_cast<double>(scene.lights.size());
+            }}}};
 }
 
 }  // namespace

@@ -78,7 +78,9 @@ MethodInfo shadow_planes_method() {
             "there is none: gobos, the simplified model): issue 25's bound for the exact methods"}},
           {{"max_edges", "caster triangle edges summed over its lights",
             "each edge may be a shadow plane, and the planes are drawn across the image",
-            [](const Scene& scene) { return 3.0 * kit::caster_triangles(scene) * static_cast<double>(scene.lights.size()); }}}};
+            [](const Scene& scene) {
+              return 3.0 * kit::caster_triangles(scene) * static_cast<double>(scene.lights.size());
+            }}}};
 }
 
 }  // namespace
