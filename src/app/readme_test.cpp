@@ -122,6 +122,10 @@ const std::map<std::string, Example>& examples() {
        {{},
         "render --builtin teapot_spot --method light_volume --set shadow_resolution=4096 --set volume_resolution=4096 "
         "--out x.png"}},
+      {"airlight: error: --set: max_triangles=1000: the scene teapot_spot has 4300 caster triangles summed over its "
+       "lights, more than beam_volumes takes at this setting (each light's beam tree holds every caster triangle and is "
+       "built on the CPU every frame); a larger max_triangles renders it anyway",
+       {{}, "render --builtin teapot_spot --method beam_volumes --set max_triangles=1000 --out x.png"}},
       {"airlight: error: --sweep: steps: must be in [1, 4096], got 0",
        {{}, "bench --builtin teapot_spot --methods raymarch --sweep raymarch.steps=4,0 --csv b.csv"}},
       {"airlight: error: --equal-quality: --csv -: its table is written beside the CSV file, as "
