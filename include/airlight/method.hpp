@@ -158,6 +158,17 @@ struct Trial {
   Baseline baseline{};
 };
 
+// A bound a method puts on the scenes it takes, held by one of its integer
+// settings: past it a frame would take the method far longer than it is meant
+// to (minutes, or gigabytes), so a caller refuses the scene before any work,
+// naming the setting, which may be raised to render it anyway.
+struct SceneLimit {
+  std::string setting;                        // the method's integer setting holding the bound
+  std::string counted;                        // what count() counts, plural: "caster triangles"
+  std::string why;                            // what grows with it: "its beam trees are built ..."
+  std::function<double(const Scene&)> count;  // the scene's count, cheap next to a frame
+};
+
 struct MethodInfo {
   std::string name;
   std::string source;       // the document it comes from
@@ -176,6 +187,7 @@ struct MethodInfo {
   MemoryEstimate memory;
   Capabilities capabilities;
   std::vector<Trial> trials;
+  std::vector<SceneLimit> limits;  // docs/decisions.md "A million triangles"
 };
 
 // Every registered method, in the order of docs/design.md §3.

@@ -169,9 +169,10 @@ std::vector<Measurement> run_bench(const BenchOptions& o, const std::vector<Scen
       double floor_ns = 0.0;
       if (o.floor) {
         const FloorTimes f = time_floor(size.width, size.height, o.warmup, o.frames);
-        std::printf("floor %dx%d: full-screen pass %s s, march of %d steps %s s, %s ns per sample\n", size.width,
-                    size.height, number(f.fullscreen_s).c_str(), floor_steps, number(f.march_s).c_str(),
-                    number(f.ns_per_sample).c_str());
+        std::fprintf(report_stream(o.csv),
+                     "floor %dx%d: full-screen pass %s s, march of %d steps %s s, %s ns per sample\n", size.width,
+                     size.height, number(f.fullscreen_s).c_str(), floor_steps, number(f.march_s).c_str(),
+                     number(f.ns_per_sample).c_str());
         floor_ns = f.ns_per_sample;
       }
       for (const auto& variant : variants) {
@@ -185,13 +186,13 @@ std::vector<Measurement> run_bench(const BenchOptions& o, const std::vector<Scen
 // ---- output ---------------------------------------------------------------------
 
 
-void write_csv(const std::filesystem::path& file, const std::vector<std::vector<std::string>>& rows) {
+void write_csv(const std::string& file, const std::vector<std::vector<std::string>>& rows) {
   std::ostringstream out;
   for (const auto& row : rows) {
     for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_field(row[i]);
     out << "\n";
   }
-  write_text_file(file, out.str());
+  write_csv_output(file, out.str());
 }
 
 // Pass names in the order first seen, so the columns follow the frame's passes.
@@ -203,7 +204,7 @@ std::vector<std::string> pass_names(const std::vector<Measurement>& rows) {
   return names;
 }
 
-void write_measurements(const std::filesystem::path& file, const std::vector<Measurement>& rows) {
+void write_measurements(const std::string& file, const std::vector<Measurement>& rows) {
   const auto passes = pass_names(rows);
   std::vector<std::string> header{"scene", "width", "height", "method", "settings", "frames",
                                   "frame_median_s", "frame_min_s", "frame_max_s", "first_frame_s"};
@@ -325,7 +326,11 @@ std::filesystem::path equal_quality_file(const std::filesystem::path& csv) {
 }
 
 void check_outputs(const BenchOptions& o, const std::vector<Size>& sizes, const std::vector<Variant>& variants) {
-  check_output_file("--csv", o.csv, {".csv"});
+  check_csv_output("--csv", o.csv);
+  if (is_standard_output(o.csv) && o.equal_quality > 0.0)
+    throw InputError("--equal-quality", "--csv -",
+                     "its table is written beside the CSV file, as FILE-equal-quality.csv, and standard output is no "
+                     "file: give --csv FILE");
   if (!o.plot.empty()) check_output_file("--plot", o.plot, {".png"});
   check_output_dir("--cache", o.cache.empty() ? reference::default_cache_dir() : std::filesystem::path(o.cache));
   std::vector<const MethodInfo*> methods{&find_method("reference")};
@@ -351,6 +356,7 @@ void bench(const BenchOptions& o) {
   const std::vector<Scene> scenes = load_scenes(o);
   check_frame_memory(scenes, sizes, variants);
   const std::vector<Measurement> rows = run_bench(o, scenes, sizes, variants);
+  OutputBatch outputs;
   write_measurements(o.csv, rows);
   if (!o.plot.empty()) write_plots(o.plot, rows);
   if (o.equal_quality > 0.0) {
@@ -362,6 +368,7 @@ void bench(const BenchOptions& o) {
     print_table(table);
     write_csv(equal_quality_file(o.csv), table);
   }
+  outputs.commit();
 }
 
 }  // namespace
@@ -381,7 +388,8 @@ Run add_bench_command(CLI::App& cli) {
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
   c->add_option("--frames", o->frames, "timed frames per run")->check(CLI::Range(1, 10000))->capture_default_str();
-  c->add_option("--csv", o->csv, "output: one row per scene, size, method and settings")->required();
+  c->add_option("--csv", o->csv, "output: one row per scene, size, method and settings; -: standard output")
+      ->required();
   c->add_option("--plot", o->plot, "output: rRMSE against frame time, log-log, per scene and size (PNG)");
   c->add_option("--equal-quality", o->equal_quality,
                 "E: per method the cheapest run with rRMSE <= E, timed against brute-force raymarch")

@@ -95,5 +95,42 @@ TEST(Bench, BadArgumentsExitTwoNamingOptionAndKey) {
             "shadow_planes, beam_volumes, hybrid_clip, hybrid, light_volume, sv_march)\n");
 }
 
+// `--csv -` (README "Pipes"): the same CSV on standard output, and what bench
+// prints beside it (the floor's times) on stderr instead.
+TEST(Bench, CsvDashWritesTheSameCsvToStandardOutputAndTheReportToStderr) {
+  const fs::path csv = work_dir() / "piped.csv";
+  const std::string args = "--scene " + tiny_scene().string() +
+                           " --methods raymarch --sweep raymarch.steps=4,8 --sizes 16x12 --frames 1 --warmup 0"
+                           " --floor --csv ";
+  const Outcome file = run(args + csv.string());
+  ASSERT_EQ(file.status, 0) << file.err;
+  EXPECT_EQ(file.out.rfind("floor 16x12: ", 0), 0u) << file.out;
+  const Outcome piped = run(args + "-");
+  ASSERT_EQ(piped.status, 0) << piped.err;
+  EXPECT_NE(piped.err.find("floor 16x12: "), std::string::npos) << piped.err;
+
+  const Table written = read_csv(csv), printed = parse_csv(piped.out);
+  ASSERT_EQ(printed.size(), 3u) << piped.out;  // the header and a row per step count
+  EXPECT_EQ(printed[0][0], "scene");
+  // Times and the process's peak memory change from run to run; errors, GPU
+  // memory and raymarch's stats (counters; planes' hold a time) do not.
+  const auto varies = [](const std::string& name) {
+    return name.ends_with("_s") || name == "ns_per_sample" || name == "floor_ratio" || name == "peak_rss_mib";
+  };
+  EXPECT_EQ(without_columns(printed, varies), without_columns(written, varies));
+}
+
+// The equal-quality table is written beside the CSV file; standard output is
+// none, so the pair is refused before any work.
+TEST(Bench, EqualQualityWithCsvDashIsRefused) {
+  const Outcome o =
+      run("--scene " + tiny_scene().string() + " --methods raymarch --sizes 16x12 --csv - --equal-quality 0.05");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err,
+            "airlight: error: --equal-quality: --csv -: its table is written beside the CSV file, as "
+            "FILE-equal-quality.csv, and standard output is no file: give --csv FILE\n");
+  EXPECT_EQ(o.out, "");
+}
+
 }  // namespace
 }  // namespace airlight

@@ -83,9 +83,9 @@ inline void expect_bad_input(const Outcome& o, const std::string& where, const s
 using Table = std::vector<std::vector<std::string>>;
 
 // Comma-separated cells (the fields here hold no commas or quotes).
-inline Table read_csv(const fs::path& file) {
+inline Table parse_csv(const std::string& text) {
   Table table;
-  std::ifstream in(file);
+  std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     std::vector<std::string> row;
     std::stringstream cells(line);
@@ -94,6 +94,18 @@ inline Table read_csv(const fs::path& file) {
     table.push_back(row);
   }
   return table;
+}
+
+inline Table read_csv(const fs::path& file) { return parse_csv(read_text(file)); }
+
+// `table` without the columns `varies` names: those a rerun changes (times, memory).
+template <typename Predicate>
+Table without_columns(const Table& table, Predicate varies) {
+  Table kept(table.size());
+  for (size_t i = 0; i < table.size(); ++i)
+    for (size_t c = 0; c < table[i].size(); ++c)
+      if (c >= table[0].size() || !varies(table[0][c])) kept[i].push_back(table[i][c]);
+  return kept;
 }
 
 inline size_t column(const Table& table, const std::string& name) {

@@ -106,7 +106,7 @@ void measure(Result& r, const Image& reference, float exposure) {
 }
 
 // The columns README.md "## Comparing" documents.
-void write_csv(const std::vector<Result>& results, const std::string& pass, const fs::path& file) {
+void write_csv(const std::vector<Result>& results, const std::string& pass, const std::string& file) {
   std::ostringstream out;
   out << "method,settings,width,height,pass,rel_rmse,max_abs,psnr_db,mean_radiance,reference_mean,prepare_s,render_s,"
          "cached\n";
@@ -117,14 +117,12 @@ void write_csv(const std::vector<Result>& results, const std::string& pass, cons
                   r.error.mean_reference, r.prepare_s, r.render_s, r.cached ? 1 : 0);
     out << csv_field(r.method) << ',' << csv_field(r.settings) << ',' << numbers << '\n';
   }
-  write_text_file(file, out.str());
+  write_csv_output(file, out.str());
 }
 
 // reference.pfm, then <index>_<method>.pfm in the order of --methods.
-void write_images(const std::vector<Result>& results, const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw Failure("cannot create " + dir.string() + ": " + ec.message());
+void write_images(const std::vector<Result>& results, const fs::path& dir, OutputBatch& outputs) {
+  outputs.create_directories(dir);
   write_image(results[0].image, dir / "reference.pfm");
   for (size_t i = 1; i < results.size(); ++i)
     write_image(results[i].image, dir / (std::to_string(i) + "_" + results[i].method + ".pfm"));
@@ -142,7 +140,7 @@ void write_sheet(const std::vector<Result>& results, const ToneMap& tone, const 
 
 void check_outputs(const CompareOptions& o, Size size, const std::vector<MethodEntry>& entries) {
   check_output_file("--out", o.out, {".png"});
-  if (!o.csv.empty()) check_output_file("--csv", o.csv, {".csv"});
+  if (!o.csv.empty()) check_csv_output("--csv", o.csv);
   if (!o.images.empty()) check_output_dir("--images", o.images);
   check_output_dir("--cache", o.cache.empty() ? reference::default_cache_dir() : fs::path(o.cache));
   std::vector<const MethodInfo*> methods{&find_method("reference")};
@@ -178,9 +176,11 @@ void compare(const CompareOptions& o) {
   }
   const ToneMap tone = o.tone.resolve(results[0].image, "compare");  // auto: measured on the reference
   for (auto& r : results) measure(r, results[0].image, tone.exposure);
-  if (!o.images.empty()) write_images(results, o.images);
+  OutputBatch outputs;
+  if (!o.images.empty()) write_images(results, o.images, outputs);
   if (!o.csv.empty()) write_csv(results, o.pass, o.csv);
   write_sheet(results, tone, o.out);
+  outputs.commit();
 }
 
 }  // namespace
@@ -197,7 +197,7 @@ Run add_compare_command(CLI::App& cli) {
   command->add_option("--set", o->assignments, "method.key=value for every entry of that method (repeatable)");
   command->add_option("--size", o->size, "image size WxH")->capture_default_str();
   command->add_option("--out", o->out, "contact sheet PNG")->required();
-  command->add_option("--csv", o->csv, "CSV of the errors and times (README: Comparing)");
+  command->add_option("--csv", o->csv, "CSV of the errors and times (README: Comparing); -: standard output");
   command->add_option("--images", o->images, "directory for the images as PFM: reference.pfm, <index>_<method>.pfm");
   command->add_option("--pass", o->pass, "what to compare (docs/design.md §6 measures the airlight)")
       ->check(CLI::IsMember({"airlight", "composite"}))

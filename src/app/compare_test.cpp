@@ -133,5 +133,30 @@ TEST(Compare, BadArgumentsExitTwoNamingThem) {
             "shadow_planes, beam_volumes, hybrid_clip, hybrid, light_volume, sv_march)\n");
 }
 
+// `--csv -` (README "Pipes"): the same CSV on standard output, and nothing else there.
+TEST(Compare, CsvDashWritesTheSameCsvToStandardOutput) {
+  const fs::path csv = work_dir() / "piped.csv";
+  const std::string args = "compare --scene " + scene_file().string() +
+                           " --methods reference,raymarch:steps=8 --size 16x12" +
+                           " --cache " + (work_dir() / "piped-cache").string() + " --out " +
+                           (work_dir() / "piped.png").string() + " --csv ";
+  const Outcome file = run(args + csv.string());
+  ASSERT_EQ(file.status, 0) << file.err;
+  EXPECT_EQ(file.out, "");
+  const Outcome piped = run(args + "-");
+  ASSERT_EQ(piped.status, 0) << piped.err;
+
+  const Table written = read_csv(csv), printed = parse_csv(piped.out);
+  ASSERT_EQ(printed.size(), 4u) << piped.out;  // the header, the cached reference, reference and raymarch
+  EXPECT_EQ(printed[0], columns);
+  // The first run rendered the reference into the cache, the second read it.
+  EXPECT_EQ(written[1][column(written, "cached")], "0");
+  EXPECT_EQ(printed[1][column(printed, "cached")], "1");
+  const auto varies = [](const std::string& name) {
+    return name == "prepare_s" || name == "render_s" || name == "cached";
+  };
+  EXPECT_EQ(without_columns(printed, varies), without_columns(written, varies));
+}
+
 }  // namespace
 }  // namespace airlight

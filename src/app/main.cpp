@@ -1,5 +1,6 @@
 // airlight: renders light shafts by every method and compares them (docs/design.md §5).
 #include "app/commands.hpp"
+#include "core/interrupt.hpp"
 
 #include <airlight/error.hpp>
 
@@ -45,6 +46,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  airlight::remove_unfinished_files_on_interrupt();  // before any thread starts
   try {
     return run(argc, argv);
   } catch (const airlight::InputError& e) {

@@ -99,9 +99,9 @@ namespace {
 
 std::string setting_text(const Settings& settings, const std::string& name) {
   const nlohmann::json value = settings.to_json().at(name);
-  return name + "=" + (value.is_string()   ? value.get<std::string>()
-                       : value.is_number() ? number_text(value.get<double>())
-                                           : value.dump());
+  return name + "=" + (value.is_string()         ? value.get<std::string>()
+                       : value.is_number_float() ? number_text(value.get<double>())
+                                                 : value.dump());
 }
 
 // A run's frame: its per-pixel part and its buffers, the largest first.
@@ -178,10 +178,29 @@ void check_memory(const std::string& option, Size size, const std::vector<const 
   check_objects(Scene{}, option, size, run, plan, false);
 }
 
+namespace {
+
+// The run's first SceneLimit the scene exceeds, refused naming its setting.
+void check_limits(const Scene& scene, const MethodRun& run, bool qualified) {
+  for (const SceneLimit& limit : run.info->limits) {
+    const double count = limit.count(scene), bound = run.settings->integer(limit.setting);
+    if (count <= bound) continue;
+    const std::string name = scene.source.empty() ? scene.name : scene.source.string();
+    const std::string key = (qualified ? run.info->name + "." : std::string()) + setting_text(*run.settings, limit.setting);
+    throw InputError("--set", key,
+                     "the scene " + name + " has " + std::to_string(static_cast<long long>(count)) + " " +
+                         limit.counted + ", more than " + run.info->name + " takes at this setting (" + limit.why +
+                         "); a larger " + limit.setting + " renders it anyway");
+  }
+}
+
+}  // namespace
+
 void check_frame_memory(const Scene& scene, const std::string& size_option, Size size, const std::vector<MethodRun>& runs,
                         int kept_images, bool qualified) {
   const double available = double(memory_available());
   for (const MethodRun& run : runs) {
+    check_limits(scene, run, qualified);
     const FramePlan plan = frame_plan(scene, size, run, kept_images);
     if (plan.total > available) refuse(scene, size_option, size, run, kept_images, plan, qualified);
     check_objects(scene, size_option, size, run, plan, qualified);

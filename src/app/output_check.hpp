@@ -39,12 +39,13 @@ struct MethodRun {
   const Settings* settings = nullptr;
 };
 
-// After the scene is loaded and before any GL allocation: each run's frame of
-// `size` (its bytes per pixel and its MethodInfo::memory), plus `kept_images`,
-// fits in memory_available(). Refuses with what takes the most: the size, the
-// setting that sizes the largest buffer ("--set: key=value", or
-// "method.key=value" when `qualified`), or the scene when its lights or
-// casters alone do.
+// After the scene is loaded and before any GL allocation: the scene is within
+// each run's MethodInfo::limits (else refused naming the limit's setting,
+// "--set: key=value", or "method.key=value" when `qualified`), and each run's
+// frame of `size` (its bytes per pixel and its MethodInfo::memory), plus
+// `kept_images`, fits in memory_available(). Refuses with what takes the most:
+// the size, the setting that sizes the largest buffer, or the scene when its
+// lights or casters alone do.
 void check_frame_memory(const Scene& scene, const std::string& size_option, Size size, const std::vector<MethodRun>& runs,
                         int kept_images = 0, bool qualified = false);
 

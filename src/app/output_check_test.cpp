@@ -135,6 +135,50 @@ TEST(OutputCheck, SettingsBeyondTheMemoryExitTwoBeforeAnyOpenGl) {
   EXPECT_FALSE(fs::exists(work_dir() / "big.csv"));
 }
 
+// A scene beyond a method's limit (MethodInfo::limits), refused after it is
+// read and before any OpenGL, naming the setting; at the limit it passes the
+// check (and the no-GL environment stops it, exit 1). Two lights over a box:
+// 24 caster triangles and 72 edges summed over the lights.
+TEST(OutputCheck, ScenesBeyondAMethodsLimitExitTwoBeforeAnyOpenGl) {
+  const fs::path scene = write_file("limits.json", R"({"format": "airlight-scene/1",
+    "camera": {"position": [0, 1, 5], "look_at": [0, 0, 0]},
+    "medium": {"scattering": 0.1},
+    "lights": [{"type": "spot", "position": [0, 3, 0], "direction": [0, -1, 0], "intensity": 10, "cone_deg": 30},
+               {"type": "point", "position": [1, 3, 0], "intensity": 10}],
+    "objects": [{"shape": "box", "min": [-1, -0.1, -1], "max": [1, 0, 1]}]})");
+  const std::string out = " --size 32x24 --out " + (work_dir() / "limited.png").string();
+  const std::string render = "render --scene " + scene.string() + out;
+  const auto refusal = [&](const std::string& key, const std::string& counted, const std::string& method,
+                           const std::string& why, const std::string& setting) {
+    return "--set: " + key + ": the scene " + scene.string() + " has " + counted + ", more than " + method +
+           " takes at this setting (" + why + "); a larger " + setting + " renders it anyway";
+  };
+  const std::string beam_why = "each light's beam tree holds every caster triangle and is built on the CPU every frame";
+  const std::string plane_why = "each edge may be a shadow plane, and the planes are drawn across the image";
+  expect_refused(render + " --method beam_volumes --set max_triangles=23",
+                 refusal("max_triangles=23", "24 caster triangles summed over its lights", "beam_volumes", beam_why,
+                         "max_triangles"));
+  expect_refused(render + " --method shadow_planes --set max_edges=71",
+                 refusal("max_edges=71", "72 caster triangle edges summed over its lights", "shadow_planes", plane_why,
+                         "max_edges"));
+  for (const std::string at :
+       {" --method beam_volumes --set max_triangles=24", " --method shadow_planes --set max_edges=72"})
+    EXPECT_EQ(run_airlight(render + at, no_gl()).status, 1) << at;
+  // compare, bench and view check the same, compare and bench with the method's name in front.
+  const std::string qualified = refusal("beam_volumes.max_triangles=23", "24 caster triangles summed over its lights",
+                                        "beam_volumes", beam_why, "max_triangles");
+  expect_refused("compare --scene " + scene.string() + " --methods raymarch,beam_volumes:max_triangles=23" + out,
+                 qualified);
+  expect_refused("bench --scene " + scene.string() + " --methods beam_volumes --set beam_volumes.max_triangles=23 "
+                 "--sizes 32x24 --csv " + (work_dir() / "limited.csv").string(),
+                 qualified);
+  expect_refused("view --scene " + scene.string() + " --method beam_volumes --set max_triangles=23 --size 32x24",
+                 refusal("max_triangles=23", "24 caster triangles summed over its lights", "beam_volumes", beam_why,
+                         "max_triangles"));
+  EXPECT_FALSE(fs::exists(work_dir() / "limited.png"));
+  EXPECT_FALSE(fs::exists(work_dir() / "limited.csv"));
+}
+
 // One OpenGL object holds less than 4 GiB (a buffer) or 2 GiB (a texture) on
 // Mesa, whatever the memory: refused up front too, as the no-GL environment shows.
 TEST(OutputCheck, ObjectsBeyondOneOpenGlObjectExitTwoBeforeAnyOpenGl) {

@@ -215,13 +215,14 @@ private:
   long judged_ = 0, failed_ = 0, invisible_ = 0, known_failed_ = 0;
 };
 
-void append(const fs::path& file, const std::string& rows) {
+void append(const std::string& file, const std::string& rows) {
   if (file.empty()) return;
+  if (is_standard_output(file)) return write_csv_output(file, rows);
   const bool fresh = !fs::exists(file) || fs::file_size(file) == 0;
   std::ofstream out(file, std::ios::binary | std::ios::app);
   out << (fresh ? header : "") << rows;
   out.flush();
-  if (!out) throw Failure("cannot append to " + file.string());
+  if (!out) throw Failure("cannot append to " + file);
 }
 
 // How often each special case came up over the seeds of the range (the issue
@@ -235,7 +236,8 @@ void print_coverage(const std::array<long, harness::special_case_count>& counts,
 
 void run_seeds(const RandomOptions& o, Size size, std::vector<const MethodInfo*> methods) {
   const SeedRange range = parse_seeds(o.seeds);
-  const Done done = o.results.empty() ? Done{} : read_results(o.results);
+  const Done done = o.results.empty() || is_standard_output(o.results) ? Done{} : read_results(o.results);
+  if (is_standard_output(o.results)) write_csv_output(o.results, header);
   Judging run(o, size, std::move(methods));
   std::array<long, harness::special_case_count> coverage{};
   std::set<std::uint64_t> structures;
@@ -278,7 +280,7 @@ void run_scene(const RandomOptions& o, Size size, std::vector<const MethodInfo*>
 void random_command(const RandomOptions& o) {
   const Size size = parse_size(o.size, "--size");
   std::vector<const MethodInfo*> methods = judged_methods(o.methods);
-  if (!o.results.empty()) check_output_file("--results", o.results, {".csv"});
+  if (!o.results.empty()) check_csv_output("--results", o.results);
   check_output_dir("--failures", o.failures);
   if (o.scene.file.empty() && o.scene.builtin.empty())
     run_seeds(o, size, std::move(methods));
@@ -299,7 +301,8 @@ Run add_random_command(CLI::App& cli) {
   command->add_option("--methods", o->methods, "the methods to judge, separated by ',' (default: all)");
   command->add_option("--size", o->size, "image size WxH")->capture_default_str();
   command->add_option("--results", o->results,
-                      "CSV the judgements are appended to, a seed at a time; the seeds it holds are skipped");
+                      "CSV the judgements are appended to, a seed at a time; the seeds it holds are skipped; "
+                      "-: standard output");
   command->add_option("--failures", o->failures, "directory for the failures' shrunk scenes")->capture_default_str();
   command->add_flag("--no-shrink", o->no_shrink, "save a failure's scene as drawn, without shrinking it");
   command->add_option("--known", o->known,

@@ -76,5 +76,23 @@ TEST(RandomCommand, AKnownFailuresLineWithoutItsReasonIsBadInput) {
   EXPECT_NE(o.err.find("expected seed,method,trial,reason"), std::string::npos) << o.err;
 }
 
+// `--results -` (README "Pipes"): the same rows on standard output, after the header.
+TEST(RandomCommand, ResultsDashWritesTheSameCsvToStandardOutput) {
+  const fs::path results = work_dir() / "piped.csv";
+  const std::string args = "random --seeds 5:6 --methods analytic --size 16x12 --no-shrink --failures " +
+                           (work_dir() / "failures").string() + " --results ";
+  const Outcome file = run_airlight(args + results.string());
+  ASSERT_TRUE(file.status == 0 || file.status == 1) << file.err;
+  EXPECT_EQ(file.out, "");
+  const Outcome piped = run_airlight(args + "-");
+  EXPECT_EQ(piped.status, file.status) << piped.err;
+
+  const Table written = read_csv(results), printed = parse_csv(piped.out);
+  ASSERT_GE(printed.size(), 2u) << piped.out;
+  EXPECT_EQ(printed[0][0], "seed");
+  const auto varies = [](const std::string& name) { return name == "seconds"; };
+  EXPECT_EQ(without_columns(printed, varies), without_columns(written, varies));
+}
+
 }  // namespace
 }  // namespace airlight

@@ -122,8 +122,15 @@ const std::map<std::string, Example>& examples() {
        {{},
         "render --builtin teapot_spot --method light_volume --set shadow_resolution=4096 --set volume_resolution=4096 "
         "--out x.png"}},
+      {"airlight: error: --set: max_triangles=1000: the scene teapot_spot has 4300 caster triangles summed over its "
+       "lights, more than beam_volumes takes at this setting (each light's beam tree holds every caster triangle and is "
+       "built on the CPU every frame); a larger max_triangles renders it anyway",
+       {{}, "render --builtin teapot_spot --method beam_volumes --set max_triangles=1000 --out x.png"}},
       {"airlight: error: --sweep: steps: must be in [1, 4096], got 0",
        {{}, "bench --builtin teapot_spot --methods raymarch --sweep raymarch.steps=4,0 --csv b.csv"}},
+      {"airlight: error: --equal-quality: --csv -: its table is written beside the CSV file, as "
+       "FILE-equal-quality.csv, and standard output is no file: give --csv FILE",
+       {{}, "bench --builtin teapot_spot --methods raymarch --csv - --equal-quality 0.05"}},
       {"airlight: warning: mesh.obj: skipped 3 degenerate triangles (zero area)",
        {{{"mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
                       "f 1 1 2\nf 2 3 3\nf 4 4 4\n"},

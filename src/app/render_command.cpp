@@ -102,8 +102,10 @@ void render(const RenderOptions& o) {
   const Image image = select_pass(frame, pass);
   const nlohmann::json output = image_stats(image, o.method);
   const ToneMap tone = o.tone.resolve(image, "render");
+  OutputBatch outputs;
   write_image(image, o.out, tone);
   if (!o.report.empty()) write_report(o, scene, settings, frame, output, tone, prepare_s, render_s);
+  outputs.commit();
 }
 
 }  // namespace

@@ -50,5 +50,29 @@ TEST(AtomicFile, AFailedWriteLeavesTheOldFileAndNoTemporary) {
   fs::remove_all(dir);
 }
 
+// A batch's files stay under their temporary names until its commit; dropped
+// uncommitted (an error on the way), it leaves the old files and removes the
+// directories it made.
+TEST(AtomicFile, ABatchChangesTheFilesAtItsCommitOrNotAtAll) {
+  const fs::path dir = fresh_dir(), old = dir / "a.csv", made = dir / "new" / "deeper", added = made / "b.csv";
+  write_text_file(old, "old\n");
+  for (const bool commit : {false, true}) {
+    {
+      OutputBatch batch;
+      batch.create_directories(made);
+      write_text_file(old, "new\n");
+      write_text_file(added, "b\n");
+      EXPECT_EQ(text_of(old), "old\n");
+      EXPECT_FALSE(fs::exists(added));
+      if (commit) batch.commit();
+    }
+    EXPECT_EQ(text_of(old), commit ? "new\n" : "old\n");
+    EXPECT_EQ(entries(dir), commit ? 2u : 1u) << "commit " << commit;  // a.csv, and new/ once committed
+  }
+  EXPECT_EQ(text_of(added), "b\n");
+  EXPECT_EQ(entries(made), 1u);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace airlight

@@ -34,7 +34,12 @@ std::string number_text(double x) {
   return out.str();
 }
 
-std::string range_text(const SettingSpec& s) { return "[" + number_text(s.min) + ", " + number_text(s.max) + "]"; }
+// An integer setting's values in whole digits (2000000, not 2e+06).
+std::string value_text(const SettingSpec& s, double x) {
+  return s.type == SettingSpec::Type::integer ? std::to_string(static_cast<long long>(x)) : number_text(x);
+}
+
+std::string range_text(const SettingSpec& s) { return "[" + value_text(s, s.min) + ", " + value_text(s, s.max) + "]"; }
 
 std::string choices_text(const SettingSpec& s) {
   std::string all;
@@ -76,7 +81,7 @@ double parse_value(const SettingSpec& s, const std::string& text, std::string* e
 std::string describe_values(const SettingSpec& s) {
   switch (s.type) {
     case SettingSpec::Type::real: return "number in " + range_text(s) + ", default " + number_text(s.default_value);
-    case SettingSpec::Type::integer: return "integer in " + range_text(s) + ", default " + number_text(s.default_value);
+    case SettingSpec::Type::integer: return "integer in " + range_text(s) + ", default " + value_text(s, s.default_value);
     case SettingSpec::Type::boolean: return std::string("true or false, default ") + (s.default_value != 0.0 ? "true" : "false");
     case SettingSpec::Type::choice:
       return "one of: " + choices_text(s) + "; default " + s.choices.at(static_cast<size_t>(s.default_value));

@@ -64,6 +64,9 @@ TEST(Settings, DescribeValuesGivesTheRangeAndTheDefault) {
   EXPECT_EQ(describe_values(specs[1]), "number in [1e-07, 0.1], default 0.001");
   EXPECT_EQ(describe_values(specs[2]), "true or false, default false");
   EXPECT_EQ(describe_values(specs[3]), "one of: white, blue; default blue");
+  // Counts of a million and more in whole digits, as they are typed.
+  const SettingSpec count{"max_edges", SettingSpec::Type::integer, 1e6, 1, 1e9, {}, "edges"};
+  EXPECT_EQ(describe_values(count), "integer in [1, 1000000000], default 1000000");
 }
 
 }  // namespace

@@ -11,7 +11,7 @@ namespace {
 // The median of the pieces' largest box sides: a grid cell holds a few
 // vertices where the pieces are small. A cell from the extent instead (the
 // backplate's, far beyond the casters) put a dense caster's every vertex into
-// one cell, and each edge then tested them all.
+// one cell, and each weld then tested them all.
 double typical_size(const std::vector<BeamPolygon>& pieces, double tolerance) {
   std::vector<double> sizes;
   for (const BeamPolygon& p : pieces) {
@@ -43,6 +43,9 @@ ConformingSet::ConformingSet(const std::vector<BeamPolygon>& pieces, double tole
     for (const glm::dvec3& v : p.vertices) loop.push_back(weld(v));
     loops_.push_back(std::move(loop));
   }
+  order_.resize(vertices_.size());
+  for (size_t id = 0; id < order_.size(); ++id) order_[id] = static_cast<int>(id);
+  if (!vertices_.empty()) build(0, static_cast<int>(order_.size()));
 }
 
 std::vector<int> ConformingSet::conforming(size_t k) const {
@@ -89,28 +92,73 @@ bool ConformingSet::near_edge(int id, const glm::dvec3& p, const glm::dvec3& d, 
   return s > 0.0 && s < 1.0 && glm::distance(p + s * d, vertices_[id]) <= tolerance_;
 }
 
+// Splits order_[begin, end) at the median of its box's widest side, down to a
+// few vertices a leaf; returns the node's index.
+int ConformingSet::build(int begin, int end) {
+  constexpr int leaf_size = 8;
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.push_back({vertices_[order_[begin]], vertices_[order_[begin]], begin, end});
+  for (int i = begin; i < end; ++i) {
+    nodes_[index].lo = glm::min(nodes_[index].lo, vertices_[order_[i]]);
+    nodes_[index].hi = glm::max(nodes_[index].hi, vertices_[order_[i]]);
+  }
+  if (end - begin <= leaf_size) return index;
+  const glm::dvec3 side = nodes_[index].hi - nodes_[index].lo;
+  const int axis = side.x >= side.y && side.x >= side.z ? 0 : side.y >= side.z ? 1 : 2;
+  const int middle = begin + (end - begin) / 2;
+  std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
+                   [&](int a, int b) { return vertices_[a][axis] < vertices_[b][axis]; });
+  const int left = build(begin, middle), right = build(middle, end);
+  nodes_[index].left = left;
+  nodes_[index].right = right;
+  return index;
+}
+
+namespace {
+
+// Whether the segment p → p + d meets the box [lo, hi] grown by `margin` (slabs).
+bool segment_meets_box(const glm::dvec3& p, const glm::dvec3& d, glm::dvec3 lo, glm::dvec3 hi, double margin) {
+  lo -= margin, hi += margin;
+  double enter = 0.0, leave = 1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (d[axis] == 0.0) {
+      if (p[axis] < lo[axis] || p[axis] > hi[axis]) return false;
+      continue;
+    }
+    double t0 = (lo[axis] - p[axis]) / d[axis], t1 = (hi[axis] - p[axis]) / d[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0), leave = std::min(leave, t1);
+    if (enter > leave) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 // The welded vertices strictly inside segment a → b within the tolerance of it, from a to b:
-// from the grid cells of the segment's box, or from every vertex when those outnumber them
-// (a long edge, such as the backplate's).
+// from the k-d tree's boxes the segment passes within the tolerance of. A grid's cells
+// over the segment's box made a long edge (a floor piece's, across a million small
+// pieces' cells) test every vertex: quadratic (docs/decisions.md "A million triangles").
 std::vector<int> ConformingSet::on_edge(int a, int b) const {
-  const glm::dvec3 p = vertices_[a], q = vertices_[b], d = q - p;
+  const glm::dvec3 p = vertices_[a], d = vertices_[b] - p;
   const double length2 = glm::dot(d, d);
   std::vector<std::pair<double, int>> found;
-  const Key lo = key(glm::min(p, q) - tolerance_), hi = key(glm::max(p, q) + tolerance_);
-  const double cells = double(hi[0] - lo[0] + 1) * double(hi[1] - lo[1] + 1) * double(hi[2] - lo[2] + 1);
+  std::vector<int> stack;
+  if (!nodes_.empty()) stack.push_back(0);
   double s = 0.0;
-  if (cells > double(vertices_.size())) {
-    for (int id = 0; id < static_cast<int>(vertices_.size()); ++id)
+  while (!stack.empty()) {
+    const Node& node = nodes_[stack.back()];
+    stack.pop_back();
+    if (!segment_meets_box(p, d, node.lo, node.hi, tolerance_)) continue;
+    if (node.left >= 0) {
+      stack.push_back(node.left);
+      stack.push_back(node.right);
+      continue;
+    }
+    for (int i = node.begin; i < node.end; ++i) {
+      const int id = order_[i];
       if (id != a && id != b && near_edge(id, p, d, length2, s)) found.emplace_back(s, id);
-  } else {
-    for (long long x = lo[0]; x <= hi[0]; ++x)
-      for (long long y = lo[1]; y <= hi[1]; ++y)
-        for (long long z = lo[2]; z <= hi[2]; ++z) {
-          const auto it = grid_.find({x, y, z});
-          if (it == grid_.end()) continue;
-          for (int id : it->second)
-            if (id != a && id != b && near_edge(id, p, d, length2, s)) found.emplace_back(s, id);
-        }
+    }
   }
   std::sort(found.begin(), found.end());
   std::vector<int> ids;

@@ -34,8 +34,15 @@ private:
   struct KeyHash {
     size_t operator()(const Key& k) const;
   };
+  // A node of the k-d tree over the welded vertices (built once they are all
+  // welded): its box and its range of order_, or its two children.
+  struct Node {
+    glm::dvec3 lo, hi;
+    int begin = 0, end = 0, left = -1, right = -1;
+  };
   Key key(const glm::dvec3& x) const;
   int weld(const glm::dvec3& v);
+  int build(int begin, int end);
   std::vector<int> on_edge(int a, int b) const;
   bool near_edge(int id, const glm::dvec3& p, const glm::dvec3& d, double length2, double& s) const;
 
@@ -43,7 +50,9 @@ private:
   glm::dvec3 origin_{0.0};
   std::vector<glm::dvec3> vertices_;
   std::vector<std::vector<int>> loops_;
-  std::unordered_map<Key, std::vector<int>, KeyHash> grid_;
+  std::unordered_map<Key, std::vector<int>, KeyHash> grid_;  // for welding
+  std::vector<int> order_;                                    // vertex ids, the tree's leaves' ranges
+  std::vector<Node> nodes_;                                   // the root first
 };
 
 }  // namespace airlight::geometry

@@ -1,18 +1,21 @@
 #include "reference/cache.hpp"
 
 #include "core/atomic_file.hpp"
-#include "core/image_io.hpp"
+#include "core/warning.hpp"
 
 #include <airlight/error.hpp>
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string_view>
 
 namespace airlight::reference {
@@ -111,34 +114,108 @@ void add_all(Hasher& h, const std::vector<T>& items) {
   for (const auto& item : items) add(h, item);
 }
 
-struct Entry {
-  fs::path airlight, surface, info;
-};
+// One file per entry (README "The reference cache"), renamed into place whole:
+//   "airlight-reference-entry/1 fnv1a64=<16 hex> bytes=<N>\n", then N bytes:
+//   a JSON line {"width", "height", "seconds"}, then the airlight's and the
+//   surface's pixels as float32 RGB, top row first, in the host's byte order.
+// The first line's size and checksum cover the rest, so a truncated, grown or
+// damaged entry is found before any of it is used.
+constexpr std::string_view entry_format = "airlight-reference-entry/1";
 
-Entry entry(const fs::path& dir, const std::string& key) {
-  return {dir / (key + ".airlight.pfm"), dir / (key + ".surface.pfm"), dir / (key + ".json")};
+fs::path entry_file(const fs::path& dir, const std::string& key) { return dir / (key + ".ref"); }
+
+std::string hex(std::uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
 }
 
-// The JSON is written last, so its presence means both images are complete.
-void store(const CachedReference& frame, const Entry& e) {
-  write_image(frame.airlight, e.airlight);
-  write_image(frame.surface, e.surface);
-  write_text_file(e.info, nlohmann::json{{"seconds", frame.seconds}}.dump() + "\n");
+std::string checksum(std::string_view bytes) {
+  Hasher h;
+  h.bytes(bytes.data(), bytes.size());
+  return hex(h.value());
 }
 
-// The cached frame, or none when absent, unreadable or of another size.
-std::optional<CachedReference> load(const Entry& e, int width, int height) {
-  std::ifstream info(e.info);
-  if (!info) return std::nullopt;
-  try {
-    CachedReference frame{read_image(e.airlight), read_image(e.surface),
-                         nlohmann::json::parse(info).at("seconds").get<double>(), true};
-    const bool sized = frame.airlight.width == width && frame.airlight.height == height &&
-                       frame.surface.width == width && frame.surface.height == height;
-    if (sized) return frame;
-  } catch (const std::exception&) {
-    // A damaged entry is rendered again and overwritten.
-  }
+std::string_view pixel_bytes(const Image& image) {
+  return {reinterpret_cast<const char*>(image.pixels.data()), image.pixels.size() * sizeof(glm::vec3)};
+}
+
+void store(const CachedReference& frame, const fs::path& file) {
+  const std::string body = nlohmann::json{{"width", frame.airlight.width},
+                                          {"height", frame.airlight.height},
+                                          {"seconds", frame.seconds}}.dump() +
+                           "\n" + std::string(pixel_bytes(frame.airlight)) + std::string(pixel_bytes(frame.surface));
+  write_atomically(file, [&](const fs::path& temp) {
+    std::ofstream out(temp, std::ios::binary);
+    out << entry_format << " fnv1a64=" << checksum(body) << " bytes=" << body.size() << "\n" << body;
+    if (!out.flush()) throw Failure("cannot write " + temp.string());
+  });
+}
+
+// Read at once by its size: through a stringstream, reading an entry took ten
+// times as long as checking its checksum (docs/decisions.md "The reference cache").
+std::string file_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  std::string bytes(in ? static_cast<size_t>(in.tellg()) : 0, '\0');
+  in.seekg(0);
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<size_t>(in.gcount()));
+  return bytes;
+}
+
+// The first line's checksum and byte count, or nothing when it is not one.
+std::optional<std::pair<std::string, size_t>> first_line(std::string_view line) {
+  std::istringstream words{std::string(line)};
+  std::string format, sum, bytes;
+  words >> format >> sum >> bytes;
+  size_t count = 0;
+  const bool parsed = format == entry_format && sum.rfind("fnv1a64=", 0) == 0 && sum.size() == 24 &&
+                      bytes.rfind("bytes=", 0) == 0 &&
+                      std::from_chars(bytes.data() + 6, bytes.data() + bytes.size(), count).ec == std::errc{};
+  if (!parsed) return std::nullopt;
+  return std::make_pair(sum.substr(8), count);
+}
+
+// What is wrong with an entry's bytes for a frame of width × height, or "" when
+// nothing is and `frame` holds it.
+std::string entry_fault(std::string_view text, int width, int height, CachedReference* frame) {
+  const size_t eol = text.find('\n');
+  const auto first = first_line(text.substr(0, eol));
+  if (eol == std::string_view::npos || !first) return "not a reference cache entry (its first line is damaged)";
+  const auto& [sum, bytes] = *first;
+  const std::string_view body = text.substr(eol + 1);
+  if (body.size() != bytes)
+    return "size check failed: " + std::to_string(body.size()) + " bytes after the first line, which says " +
+           std::to_string(bytes);
+  if (const std::string actual = checksum(body); actual != sum)
+    return "checksum check failed: the content's FNV-1a is " + actual + ", the first line says " + sum;
+  const size_t meta_end = body.find('\n');
+  const nlohmann::json meta = nlohmann::json::parse(body.substr(0, meta_end), nullptr, false);
+  const auto number = [&](const char* key) {
+    const auto it = meta.is_object() ? meta.find(key) : meta.end();
+    return it != meta.end() && it->is_number() ? it->get<double>() : -1.0;
+  };
+  const size_t image_bytes = static_cast<size_t>(width) * height * sizeof(glm::vec3);
+  if (meta_end == std::string_view::npos || number("width") != width || number("height") != height ||
+      body.size() - meta_end - 1 != 2 * image_bytes)
+    return "its metadata is not that of a " + std::to_string(width) + "x" + std::to_string(height) + " frame";
+  frame->airlight = frame->surface = Image(width, height);
+  std::memcpy(frame->airlight.pixels.data(), body.data() + meta_end + 1, image_bytes);
+  std::memcpy(frame->surface.pixels.data(), body.data() + meta_end + 1 + image_bytes, image_bytes);
+  frame->seconds = number("seconds");
+  frame->cached = true;
+  return "";
+}
+
+// The cached frame, or none when absent; a damaged entry is reported and
+// rendered again (and overwritten).
+std::optional<CachedReference> load(const fs::path& file, int width, int height) {
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return std::nullopt;
+  CachedReference frame;
+  const std::string fault = entry_fault(file_bytes(file), width, height, &frame);
+  if (fault.empty()) return frame;
+  warn(file.string(), fault + "; rendering the reference again");
   return std::nullopt;
 }
 
@@ -172,20 +249,18 @@ std::string reference_key(const Scene& scene, int width, int height, const Setti
   h.add(settings.subpixel.y);
   for (const bool rendered : settings.pixels) h.add(rendered ? 1 : 0);  // none when all are
   if (!settings.airlight) h.add(0);                                      // nothing by default
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.value()));
-  return hex;
+  return hex(h.value());
 }
 
 CachedReference cached_reference(const Scene& scene, int width, int height, const fs::path& cache_dir,
                                  const Settings& settings) {
-  const Entry e = entry(cache_dir, reference_key(scene, width, height, settings));
-  if (auto frame = load(e, width, height)) return *frame;
+  const fs::path file = entry_file(cache_dir, reference_key(scene, width, height, settings));
+  if (auto frame = load(file, width, height)) return *frame;
   std::error_code ec;
   fs::create_directories(cache_dir, ec);
   if (ec) throw Failure("cannot create the reference cache " + cache_dir.string() + ": " + ec.message());
   CachedReference frame = render_reference(scene, width, height, settings);
-  store(frame, e);
+  store(frame, file);
   return frame;
 }
 

@@ -29,8 +29,11 @@ struct CachedReference {
 };
 
 // The reference's airlight and surface passes for the scene at that size, from
-// `cache_dir` when present, else rendered and stored there (PFM files named by
-// reference_key). Throws Failure when the directory cannot be written.
+// `cache_dir` when present, else rendered and stored there: one file,
+// <reference_key>.ref, renamed into place whole, so that processes sharing the
+// directory never read half an entry. An entry that fails its size or checksum
+// check is reported by warn() and rendered again. Throws Failure when the
+// directory cannot be written.
 CachedReference cached_reference(const Scene& scene, int width, int height, const std::filesystem::path& cache_dir,
                                  const Settings& settings = {});
 

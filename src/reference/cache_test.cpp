@@ -2,10 +2,16 @@
 // any change to the scene's content changes the key.
 #include "reference/cache.hpp"
 
+#include "core/warning.hpp"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
 #include <memory>
+#include <sstream>
 
 namespace airlight::reference {
 namespace {
@@ -53,6 +59,75 @@ TEST(ReferenceCache, SecondCallReadsTheCache) {
   double sum = 0.0;
   for (const auto& p : first.airlight.pixels) sum += p.r;
   EXPECT_GT(sum, 0.0);  // the scene has airlight, so equality above means something
+  fs::remove_all(dir);
+}
+
+std::string bytes_of(const fs::path& file) {
+  std::stringstream text;
+  text << std::ifstream(file, std::ios::binary).rdbuf();
+  return text.str();
+}
+
+// 64-bit FNV-1a, written out here as the format (README "The reference cache") states it.
+std::string fnv1a(std::string_view bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (const unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
+}
+
+// A damaged entry is reported with `warning` (after "<file>: "), rendered
+// again and stored whole: the next call reads it, with no warning.
+void expect_rendered_again(const Scene& scene, const fs::path& dir, const CachedReference& first,
+                           const std::string& warning) {
+  const fs::path file = dir / (reference_key(scene, 16, 12) + ".ref");
+  {
+    CapturedWarnings warnings;
+    const CachedReference again = cached_reference(scene, 16, 12, dir);
+    EXPECT_FALSE(again.cached);
+    EXPECT_EQ(again.airlight.pixels, first.airlight.pixels);
+    EXPECT_EQ(warnings.text(), "airlight: warning: " + file.string() + ": " + warning + "\n");
+  }
+  CapturedWarnings warnings;
+  EXPECT_TRUE(cached_reference(scene, 16, 12, dir).cached);
+  EXPECT_EQ(warnings.text(), "");
+}
+
+// The entry's first line and the bytes after it.
+std::pair<std::string, std::string> split_entry(const fs::path& file) {
+  const std::string text = bytes_of(file);
+  const size_t eol = text.find('\n');
+  return {text.substr(0, eol), text.substr(eol + 1)};
+}
+
+TEST(ReferenceCache, ATruncatedEntryIsRenderedAgainWithAWarning) {
+  const fs::path dir = fresh_dir("airlight_reference_cache_truncated");
+  const Scene scene = spot_over_floor();
+  const CachedReference first = cached_reference(scene, 16, 12, dir);
+  const fs::path file = dir / (reference_key(scene, 16, 12) + ".ref");
+  const size_t body = split_entry(file).second.size();  // a JSON line, then 2 × 16 × 12 pixels of 12 bytes
+  EXPECT_EQ(body, split_entry(file).second.find('\n') + 1 + 2 * 16 * 12 * 12);
+  fs::resize_file(file, fs::file_size(file) - 100);
+  expect_rendered_again(scene, dir, first,
+                        "size check failed: " + std::to_string(body - 100) +
+                            " bytes after the first line, which says " + std::to_string(body) +
+                            "; rendering the reference again");
+  fs::remove_all(dir);
+}
+
+TEST(ReferenceCache, AFlippedByteIsFoundByTheChecksum) {
+  const fs::path dir = fresh_dir("airlight_reference_cache_flipped");
+  const Scene scene = spot_over_floor();
+  const CachedReference first = cached_reference(scene, 16, 12, dir);
+  const fs::path file = dir / (reference_key(scene, 16, 12) + ".ref");
+  auto [line, body] = split_entry(file);
+  EXPECT_EQ(line, "airlight-reference-entry/1 fnv1a64=" + fnv1a(body) + " bytes=" + std::to_string(body.size()));
+  body[body.size() - 7] ^= 0x10;  // one bit of a surface pixel
+  std::ofstream(file, std::ios::binary) << line << '\n' << body;
+  expect_rendered_again(scene, dir, first,
+                        "checksum check failed: the content's FNV-1a is " + fnv1a(body) + ", the first line says " +
+                            line.substr(line.find('=') + 1, 16) + "; rendering the reference again");
   fs::remove_all(dir);
 }
 

@@ -23,7 +23,7 @@ ReferenceJob::ReferenceJob(Scene posed, int width, int height)
       }) {}
 
 ReferenceJob::~ReferenceJob() {
-  control_.cancel = true;
+  cancel();
   worker_.join();
 }
 

@@ -3,7 +3,9 @@
 // scene as posed now, at the window's size, on a worker thread inside a task
 // arena one core short of the machine, so the window keeps drawing while it
 // runs. Destroying the job (a new view, the error view turned off) cancels it:
-// tiles not yet started are skipped and the worker is joined.
+// tiles not yet started are skipped and the worker is joined. Every member the
+// worker writes is read only after finished() (an atomic), so the window's
+// thread may poll progress() and finished() at any time (scripts/tsan).
 #include "reference/reference.hpp"
 
 #include <airlight/method.hpp>
@@ -22,6 +24,8 @@ public:
   ReferenceJob& operator=(const ReferenceJob&) = delete;
 
   float progress() const;  // 0 … 1, by tiles
+  // Skips the tiles not yet started: finished() follows with error() "cancelled".
+  void cancel() { control_.cancel = true; }
   bool finished() const { return finished_; }
   // After finished(): the images, or why there are none.
   const reference::Images& images() const { return images_; }

@@ -30,7 +30,8 @@ FrameImages beam_volumes(const Scene& scene, const std::vector<std::string>& set
 TEST(BeamVolumes, RegisteredWithItsSettings) {
   std::set<std::string> names;
   for (const SettingSpec& s : find_method("beam_volumes").settings) names.insert(s.name);
-  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "capacity", "samples", "accumulate"}));
+  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "capacity", "samples", "accumulate",
+                                                "max_triangles"}));
 }
 
 // The eye inside the spot's lit cone of biri_sphere, between the light and the

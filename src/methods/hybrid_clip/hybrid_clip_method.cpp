@@ -18,7 +18,7 @@ MethodInfo hybrid_clip_method() {
           160, kit::gpu_memory(kit::slab_region_needs), {.caster_triangles = true},
           {{"high quality", {"planes=1024", "shadow_resolution=2048"}, Trial::Measure::rel_rmse, 0.03,
             "1024 planes per light clipped by the bounding volumes' beam trees, 2048² maps: the slabs' sampling "
-            "is what is left; 3 % is issue 25's bound for sampling methods at high quality"}}};
+            "is what is left; 3 % is issue 25's bound for sampling methods at high quality"}}, {}};
 }
 
 }  // namespace

@@ -75,7 +75,7 @@ MethodInfo interleaved_method() {
           224, kit::gpu_memory(), {},
           {{"high quality", {"steps=512", "shadow_resolution=2048"}, Trial::Measure::rel_rmse, 0.03,
             "512 equiangular samples per light over 4×4 blocks and 2048² maps: the gather blurs only within a "
-            "block, guarded against silhouettes; 3 % is issue 25's bound for sampling methods at high quality"}}};
+            "block, guarded against silhouettes; 3 % is issue 25's bound for sampling methods at high quality"}}, {}};
 }
 
 }  // namespace

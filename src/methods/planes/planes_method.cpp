@@ -17,7 +17,7 @@ MethodInfo planes_method() {
           160, kit::gpu_memory(), {},
           {{"high quality", {"planes=1024", "shadow_resolution=2048"}, Trial::Measure::rel_rmse, 0.03,
             "1024 planes per light through its lit region and 2048² maps: the slabs' sampling is what is left; 3 % "
-            "is issue 25's bound for sampling methods at high quality"}}};
+            "is issue 25's bound for sampling methods at high quality"}}, {}};
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ MethodInfo raymarch_method() {
           160, kit::gpu_memory(), {},
           {{"high quality", {"steps=512", "shadow_resolution=2048"}, Trial::Measure::rel_rmse, 0.03,
             "512 equiangular steps per light and 2048² maps: at 32×24 a pixel spans many texels, so what is left is "
-            "the sampling along the ray; 3 % is issue 25's bound for sampling methods at high quality"}}};
+            "the sampling along the ray; 3 % is issue 25's bound for sampling methods at high quality"}}, {}};
 }
 
 }  // namespace

@@ -122,7 +122,7 @@ MethodInfo sv_march_method() {
             "light's leg through a dense volume, random scene 13, was 3.8 % off at 64, 0.3 % at 256; at 512 "
             "llvmpipe's loop limit cuts the exact parts short, seed 31: docs/decisions.md), 2048² maps: the "
             "sampling within the shells is what is left; 3 % is issue 25's bound for sampling methods at high "
-            "quality"}}};
+            "quality"}}, {}};
 }
 
 }  // namespace
