@@ -178,9 +178,6 @@ void check_memory(const std::string& option, Size size, const std::vector<const 
   check_objects(Scene{}, option, size, run, plan, false);
 }
 
-namespace {
-
-// The run's first SceneLimit the scene exceeds, refused naming its setting.
 void check_limits(const Scene& scene, const MethodRun& run, bool qualified) {
   for (const SceneLimit& limit : run.info->limits) {
     const double count = limit.count(scene), bound = run.settings->integer(limit.setting);
@@ -193,8 +190,6 @@ void check_limits(const Scene& scene, const MethodRun& run, bool qualified) {
                          "); a larger " + limit.setting + " renders it anyway");
   }
 }
-
-}  // namespace
 
 void check_frame_memory(const Scene& scene, const std::string& size_option, Size size, const std::vector<MethodRun>& runs,
                         int kept_images, bool qualified) {

@@ -39,6 +39,12 @@ struct MethodRun {
   const Settings* settings = nullptr;
 };
 
+// The scene is within the run's MethodInfo::limits, else refused naming the
+// limit's setting, "--set: key=value", or "method.key=value" when `qualified`
+// (docs/decisions.md "A million triangles"). The viewer checks it at each
+// change of method or setting.
+void check_limits(const Scene& scene, const MethodRun& run, bool qualified = false);
+
 // After the scene is loaded and before any GL allocation: the scene is within
 // each run's MethodInfo::limits (else refused naming the limit's setting,
 // "--set: key=value", or "method.key=value" when `qualified`), and each run's

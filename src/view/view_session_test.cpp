@@ -216,6 +216,11 @@ TEST(ViewSession, ScriptErrorsNameTheLine) {
   expect_bad_input(l, (work_dir() / "session.txt").string(), "line 1", "a light the scene does not have");
   const Outcome r = run_view("method reference\n", "");
   expect_bad_input(r, "method", "reference", "the CPU reference is not a live method");
+  // A method's limit holds at each change in the viewer as at the command line
+  // (OutputCheck.ScenesBeyondAMethodsLimitExitTwoBeforeAnyOpenGl has the whole message).
+  const Outcome b = run_view("method beam_volumes\nset max_triangles 10\nquit\n", "");
+  expect_bad_input(b, "--set", "max_triangles=10", "a scene beyond beam_volumes' triangle limit");
+  EXPECT_NE(b.err.find("a larger max_triangles renders it anyway"), std::string::npos) << b.err;
 }
 
 // No window without a display: exit 1, saying how to run it under Xvfb.

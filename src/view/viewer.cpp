@@ -2,6 +2,7 @@
 
 #include "app/contact_sheet.hpp"
 #include "app/method_settings.hpp"
+#include "app/output_check.hpp"
 #include "core/metrics.hpp"
 #include "core/image_io.hpp"
 #include "gpu/program.hpp"
@@ -161,6 +162,7 @@ void Viewer::quit() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 
 void Viewer::create_method(const std::string& name, const Settings& settings) {
   const MethodInfo& info = find_method(name);
+  app::check_limits(scene_, {&info, &settings});  // before the method's work, as the command checks it
   auto method = info.create(settings);
   method->prepare(scene_);
   method_ = std::move(method);
