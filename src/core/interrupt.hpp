@@ -15,8 +15,9 @@ namespace airlight {
 void remove_unfinished_files_on_interrupt();
 
 // A file or directory removed if a signal arrives while it lives; from then on,
-// nothing removes it. Registering it never fails and never allocates in the
-// handler, which only unlinks (rmdir for a directory) what is registered.
+// nothing removes it. Registering throws Failure only when 1024 are
+// registered at once; the handler never allocates, it only unlinks (rmdir for
+// a directory) what is registered.
 class Unfinished {
 public:
   enum class Kind { file, directory };
