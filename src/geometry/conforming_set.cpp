@@ -1,5 +1,7 @@
 #include "geometry/conforming_set.hpp"
 
+#include "geometry/segment_box.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
@@ -114,27 +116,6 @@ int ConformingSet::build(int begin, int end) {
   return index;
 }
 
-namespace {
-
-// Whether the segment p → p + d meets the box [lo, hi] grown by `margin` (slabs).
-bool segment_meets_box(const glm::dvec3& p, const glm::dvec3& d, glm::dvec3 lo, glm::dvec3 hi, double margin) {
-  lo -= margin, hi += margin;
-  double enter = 0.0, leave = 1.0;
-  for (int axis = 0; axis < 3; ++axis) {
-    if (d[axis] == 0.0) {
-      if (p[axis] < lo[axis] || p[axis] > hi[axis]) return false;
-      continue;
-    }
-    double t0 = (lo[axis] - p[axis]) / d[axis], t1 = (hi[axis] - p[axis]) / d[axis];
-    if (t0 > t1) std::swap(t0, t1);
-    enter = std::max(enter, t0), leave = std::min(leave, t1);
-    if (enter > leave) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
 // The welded vertices strictly inside segment a → b within the tolerance of it, from a to b:
 // from the k-d tree's boxes the segment passes within the tolerance of. A grid's cells
 // over the segment's box made a long edge (a floor piece's, across a million small
@@ -149,7 +130,7 @@ std::vector<int> ConformingSet::on_edge(int a, int b) const {
   while (!stack.empty()) {
     const Node& node = nodes_[stack.back()];
     stack.pop_back();
-    if (!segment_meets_box(p, d, node.lo, node.hi, tolerance_)) continue;
+    if (!segment_meets_box(p, d, node.lo - tolerance_, node.hi + tolerance_)) continue;
     if (node.left >= 0) {
       stack.push_back(node.left);
       stack.push_back(node.right);

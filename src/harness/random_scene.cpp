@@ -7,6 +7,7 @@
 
 #include "core/solid.hpp"
 #include "geometry/camera.hpp"
+#include "geometry/segment_box.hpp"
 #include "harness/random.hpp"
 #include "optics/light.hpp"
 #include "scene/gobo_patterns.hpp"
@@ -328,28 +329,12 @@ bool positional(const Light& light) { return light.type != LightType::directiona
 
 Box3 mesh_box(const Mesh& mesh) { return bounds_of(mesh.positions); }
 
-// Whether the segment p + t·(q − p), t in [0, 1], meets the box (slabs).
-bool segment_meets(const Box3& b, const dvec3& p, const dvec3& q) {
-  double t0 = 0.0, t1 = 1.0;
-  for (int i = 0; i < 3; ++i) {
-    const double d = q[i] - p[i];
-    if (d == 0.0) {
-      if (p[i] < b.min[i] || p[i] > b.max[i]) return false;
-      continue;
-    }
-    double a = (b.min[i] - p[i]) / d, c = (b.max[i] - p[i]) / d;
-    if (a > c) std::swap(a, c);
-    t0 = std::max(t0, a), t1 = std::min(t1, c);
-    if (t0 > t1) return false;
-  }
-  return true;
-}
-
 // Whether the open segment from p to q crosses a triangle of the mesh (Möller–
 // Trumbore); its ends are left out by a hair, so that an eye or a light on a
 // surface does not count as behind it.
 bool segment_hits(const Mesh& mesh, const dvec3& p, const dvec3& q) {
-  if (!segment_meets(mesh_box(mesh), p, q)) return false;
+  const Box3 box = mesh_box(mesh);
+  if (!geometry::segment_meets_box(p, q - p, box.min, box.max)) return false;
   const dvec3 d = q - p;
   for (const glm::uvec3& t : mesh.triangles) {
     const dvec3 a(mesh.positions[t.x]), e1 = dvec3(mesh.positions[t.y]) - a, e2 = dvec3(mesh.positions[t.z]) - a;
