@@ -1,7 +1,7 @@
 // The fuzz build's registry holds fuzz/methods.cpp's methods, in the registered order.
 #include "methods.hpp"
 
-#include "methods/kit/registry.hpp"
+#include "methods/kit/method/registry.hpp"
 
 namespace {
 using airlight::fuzz::planes_info;

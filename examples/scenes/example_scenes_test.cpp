@@ -5,7 +5,7 @@
 #include "core/metrics.hpp"
 #include "core/solid.hpp"
 #include "core/test_paths.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/testing/test_support.hpp"
 
 #include <airlight/method.hpp>
 #include <airlight/scene.hpp>

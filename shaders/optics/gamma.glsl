@@ -2,7 +2,7 @@
 // closed_form.cpp: the Sun et al. F(u, v) table lookup (SunTable), Nilsson's
 // simplified model (eq. 2.17), the exact exponential form of directional
 // lights, and the Gauss–Legendre nodes of Biri's angular integral. The
-// scene-level Γ is methods/kit/closed_form.glsl.
+// scene-level Γ is methods/kit/gamma/closed_form.glsl.
 #include "optics/sun.glsl"
 
 // optics::sun_asymptote: B(u, v) = v·(1 - e^{-uv})/(uv), the table's divisor.

@@ -1,7 +1,7 @@
 // GLSL twin of src/optics/light.cpp: what a light sends toward a point (spot
 // cone, gobo, a directional light's beam) and the distance falloff of each
 // light model (docs/design.md §1).
-// Tested against the C++ by src/methods/kit/twins/optics_twin_test.cpp and
+// Tested against the C++ by src/methods/kit/testing/twins/optics_twin_test.cpp and
 // cone_twin_test.cpp.
 #include "optics/numerics.glsl"
 #include "optics/media.glsl"

@@ -1,6 +1,6 @@
 // GLSL twin of the geometry and extinction in src/optics/media.cpp: chords of
 // segments and rays through the axis-aligned box volumes, and T(s) = exp(-σt s)
-// (docs/design.md §1). Tested against the C++ by src/methods/kit/twins/optics_twin_test.cpp.
+// (docs/design.md §1). Tested against the C++ by src/methods/kit/testing/twins/optics_twin_test.cpp.
 #include "optics/constants.glsl"
 
 // Slab test, as the C++ box_overlap: the part (x, y) of [t0, t1] where o + t·d is

@@ -1,7 +1,7 @@
 // GLSL twin of src/optics/phase.cpp (docs/design.md §1): phase functions normalized to
 // 1 over the sphere. cos_theta is the cosine between the light's direction of
 // travel and the direction toward the eye, so g > 0 scatters forward.
-// Tested against the C++ by src/methods/kit/twins/optics_twin_test.cpp.
+// Tested against the C++ by src/methods/kit/testing/twins/optics_twin_test.cpp.
 #include "optics/constants.glsl"
 
 // Lobe type codes: the integer values of airlight::PhaseType (include/airlight/scene.hpp).

@@ -2,7 +2,7 @@
 // (Kingston eqs. 36-40): the unoccluded single scattering of one isotropic
 // point light along a view segment in a homogeneous medium, isotropic phase.
 // Evaluated in the shader by Gauss–Legendre quadrature (the table variant is
-// separate). Tested against the C++ by src/methods/kit/twins/optics_twin_test.cpp.
+// separate). Tested against the C++ by src/methods/kit/testing/twins/optics_twin_test.cpp.
 #include "optics/numerics.glsl"
 #include "optics/light.glsl"
 

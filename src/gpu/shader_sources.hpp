@@ -1,7 +1,7 @@
 #pragma once
 // The .glsl files embedded at build time (cmake/embed_shaders.cmake), keyed by
 // path: "optics/phase.glsl" for shaders/optics/phase.glsl, and
-// "methods/kit/march.comp.glsl" for src/methods/kit/march.comp.glsl.
+// "methods/kit/march/march.comp.glsl" for src/methods/kit/march/march.comp.glsl.
 #include <map>
 #include <string>
 #include <string_view>

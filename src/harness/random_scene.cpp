@@ -30,7 +30,7 @@ namespace {
 
 using glm::dvec3;
 
-// ---- structure: what the shader defines see (methods/kit/scene_defines.cpp) ----
+// ---- structure: what the shader defines see (methods/kit/frame/scene_defines.cpp) ----
 
 enum class Space { room, ground, open };
 enum class CasterKind { box, sphere, cylinder, teapot, polyhedron, open_mesh, quad };

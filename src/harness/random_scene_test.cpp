@@ -187,7 +187,7 @@ TEST(RandomScene, SizesAndOpticalDepthsSpanTheirRanges) {
   EXPECT_GT(thickest, 10.0);
 }
 
-// Everything the kit's shader defines read (methods/kit/scene_defines.cpp) and
+// Everything the kit's shader defines read (methods/kit/frame/scene_defines.cpp) and
 // whether any mesh exists (no mesh: no shadow maps).
 std::string defines_of(const Scene& s) {
   std::string text = std::to_string(s.lights.size()) + "/" + std::to_string(s.volumes.size()) + "/" +

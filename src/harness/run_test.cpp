@@ -3,7 +3,7 @@
 // stays visible.
 #include "harness/run.hpp"
 
-#include "methods/kit/registry.hpp"
+#include "methods/kit/method/registry.hpp"
 #include "reference/reference.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 #pragma once
 // Random line–cone configurations shared by the tests of cone_intervals
 // (light.hpp): the C++ against brute-force sampling (light_test.cpp) and its GLSL
-// twin against the C++ (src/methods/kit/twins/cone_twin_test.cpp). Each kind is a way the
+// twin against the C++ (src/methods/kit/testing/twins/cone_twin_test.cpp). Each kind is a way the
 // clipping can go wrong: a generic line, the apex behind the eye, a line along
 // the axis, through the apex, a wide cone (>= 90°), a line parallel to a
 // generator (or on the surface), tangent to the cone, a narrow cone, a line

@@ -3,7 +3,7 @@
 // homogeneous medium that fills space (docs/design.md §1 with V = 1), in closed form.
 // Bounded volumes are ignored (the closed forms hold in one homogeneous medium
 // only); a gobo is ignored too (Γ uses the cone or the beam box, not the light
-// map's colours). GLSL twin: shaders/optics/gamma.glsl, src/methods/kit/closed_form.glsl.
+// map's colours). GLSL twin: shaders/optics/gamma.glsl, src/methods/kit/gamma/closed_form.glsl.
 #include <airlight/scene.hpp>
 #include <glm/vec3.hpp>
 #include <vector>

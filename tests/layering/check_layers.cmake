@@ -19,23 +19,46 @@ endif()
 # down only; gpu sits on core alone, so the GL layer stays usable without the
 # scene; a method reaches others only through the kit. `scene-model` is
 # <airlight/scene.hpp>: the scene's types, which optics and geometry compute
-# with, apart from the loaders of src/scene/.
+# with, apart from the loaders of src/scene/. `contract` is <airlight/method.hpp>
+# and <airlight/engine.hpp>: the method contract's types, which every room of
+# the kit computes with, implemented by methods/kit/method and methods/kit/engine.
+set(BASE gpu reference scene geometry optics core scene-model contract)
 set(ALLOW_core        "")
 set(ALLOW_optics      core scene-model)
 set(ALLOW_geometry    optics core scene-model)
 set(ALLOW_scene       core scene-model)
 set(ALLOW_reference   geometry optics core scene-model)
 set(ALLOW_gpu         core)
-set(ALLOW_methods/kit gpu reference scene geometry optics core scene-model)
+set(ALLOW_contract    core scene-model)
+# The kit's rooms (docs/design.md §2). Only planes/ reaches the reference (its
+# lights' bounds trace rays); the rest sit on the GL layer and below.
+set(KIT_BASE gpu scene geometry optics core scene-model contract)
+set(ALLOW_methods/kit/frame        ${KIT_BASE})
+set(ALLOW_methods/kit/sampling     ${KIT_BASE})
+set(ALLOW_methods/kit/engine       methods/kit/frame ${KIT_BASE})
+set(ALLOW_methods/kit/method       methods/kit/engine methods/kit/frame ${KIT_BASE})
+set(ALLOW_methods/kit/march        methods/kit/sampling methods/kit/frame ${KIT_BASE})
+set(ALLOW_methods/kit/gamma        methods/kit/sampling methods/kit/frame ${KIT_BASE})
+set(ALLOW_methods/kit/counting     methods/kit/gamma methods/kit/sampling methods/kit/frame ${KIT_BASE})
+set(ALLOW_methods/kit/light_volume methods/kit/counting methods/kit/method methods/kit/frame ${KIT_BASE})
+set(ALLOW_methods/kit/planes       methods/kit/method methods/kit/gamma methods/kit/sampling methods/kit/frame
+                                   reference ${KIT_BASE})
+set(KIT_ROOMS frame sampling engine method march gamma counting light_volume planes)
+list(TRANSFORM KIT_ROOMS PREPEND methods/kit/ OUTPUT_VARIABLE KIT)
+# What the tests share, on every room; and a test beside the code it tests
+# (*_test.cpp, a method's *_quality.cpp) may include it and every room, as the
+# suites link the whole kit.
+set(ALLOW_methods/kit/testing      ${KIT} ${BASE})
+set(ALLOW_test                     methods/kit/testing ${KIT} ${BASE})
 # methods/<name>: the kit and everything below it, never another methods/<other>.
-set(ALLOW_methods/*   methods/kit gpu reference scene geometry optics core scene-model)
+set(ALLOW_methods/*   ${KIT} ${BASE})
 # The command and the shared library reach methods only through the registry.
-set(ALLOW_app         harness methods/kit gpu reference scene geometry optics core scene-model)
-set(ALLOW_lib         methods/kit gpu reference scene geometry optics core scene-model)
+set(ALLOW_app         harness ${KIT} ${BASE})
+set(ALLOW_lib         ${KIT} ${BASE})
 # The differential harness judges methods, through the registry as app does.
-set(ALLOW_harness     methods/kit gpu reference scene geometry optics core scene-model)
+set(ALLOW_harness     ${KIT} ${BASE})
 # The viewer is a subcommand on app's helpers (scene source, settings); app never includes it.
-set(ALLOW_view        app harness methods/kit gpu reference scene geometry optics core scene-model)
+set(ALLOW_view        app harness ${KIT} ${BASE})
 
 set(PUBLIC_HEADER_OWNER_error    core)
 set(PUBLIC_HEADER_OWNER_image    core)
@@ -43,10 +66,30 @@ set(PUBLIC_HEADER_OWNER_settings core)
 set(PUBLIC_HEADER_OWNER_timing   core)
 set(PUBLIC_HEADER_OWNER_box      core)
 set(PUBLIC_HEADER_OWNER_scene    scene-model)
-set(PUBLIC_HEADER_OWNER_method   methods/kit)  # the method contract, implemented by the kit
-set(PUBLIC_HEADER_OWNER_engine   methods/kit)
+set(PUBLIC_HEADER_OWNER_method   contract)
+set(PUBLIC_HEADER_OWNER_engine   contract)
 
 set(FOLDERS core optics geometry scene reference gpu methods harness app view lib)
+
+# The arrows are one-way: no row of the table reaches itself through others.
+get_cmake_property(variables VARIABLES)
+list(FILTER variables INCLUDE REGEX "^ALLOW_")
+foreach(row IN LISTS variables)
+  string(REGEX REPLACE "^ALLOW_" "" start "${row}")
+  set(reached "")
+  set(frontier ${${row}})
+  while(frontier)
+    list(POP_FRONT frontier next)
+    if(next IN_LIST reached)
+      continue()
+    endif()
+    list(APPEND reached ${next})
+    list(APPEND frontier ${ALLOW_${next}})
+  endwhile()
+  if(start IN_LIST reached)
+    message(FATAL_ERROR "layering: the table's arrows make a cycle through ${start} (${CMAKE_CURRENT_LIST_FILE})")
+  endif()
+endforeach()
 
 # folder of a path relative to src/ or shaders/ ("methods/raymarch/x.cpp" -> methods/raymarch)
 function(folder_of path out)
@@ -56,12 +99,16 @@ function(folder_of path out)
   if(top STREQUAL "methods" AND n GREATER 2)
     list(GET parts 1 sub)
     set(top "methods/${sub}")
+    if(sub STREQUAL "kit" AND n GREATER 3)  # a room of the kit: methods/kit/frame
+      list(GET parts 2 room)
+      set(top "methods/kit/${room}")
+    endif()
   endif()
   set(${out} "${top}" PARENT_SCOPE)
 endfunction()
 
 function(rule_of folder out)
-  if(folder MATCHES "^methods/" AND NOT folder STREQUAL "methods/kit")
+  if(folder MATCHES "^methods/" AND NOT folder MATCHES "^methods/kit")
     set(${out} "methods/*" PARENT_SCOPE)
   else()
     set(${out} "${folder}" PARENT_SCOPE)
@@ -91,6 +138,9 @@ foreach(file IN LISTS files)
     continue()
   endif()
   set(allowed ${ALLOW_${rule}})
+  if(file MATCHES "_(test|quality)\\.cpp$")
+    list(APPEND allowed ${ALLOW_test})
+  endif()
 
   # Skip files without includes before numbering their lines.
   file(STRINGS "${ROOT}/${file}" has_include REGEX "^[ \t]*#[ \t]*include")
@@ -137,7 +187,7 @@ foreach(file IN LISTS files)
     else()
       set(allowed_text "only ${allowed_text}")
     endif()
-    if(from MATCHES "^methods/" AND to MATCHES "^methods/" AND NOT to STREQUAL "methods/kit")
+    if(from MATCHES "^methods/" AND to MATCHES "^methods/" AND NOT to MATCHES "^methods/kit")
       set(why "a method never includes another method's folder (${rule} may include ${allowed_text})")
     else()
       set(why "${from} may include ${allowed_text}")

@@ -5,7 +5,7 @@
 // no volumetric shadows (Kingston §5.2.3). With SUN_F_TABLE, Γ reads Sun et
 // al.'s F(u, v) from the table at BINDING_SUN_TABLE instead of integrating it.
 #define SCENE_IN_REGISTERS
-#include "methods/kit/closed_form.glsl"
+#include "methods/kit/gamma/closed_form.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) writeonly uniform image2D airlight_out;

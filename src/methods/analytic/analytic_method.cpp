@@ -1,8 +1,8 @@
-#include "methods/kit/gpu_method.hpp"
+#include "methods/kit/method/gpu_method.hpp"
 #include "gpu/program.hpp"
 #include "optics/gamma.hpp"
 
-#include "methods/kit/registry.hpp"
+#include "methods/kit/method/registry.hpp"
 
 #include <memory>
 #include <string>

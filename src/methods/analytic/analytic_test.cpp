@@ -5,7 +5,7 @@
 // configurations of the closed form at the image level.
 #include "core/metrics.hpp"
 #include "geometry/camera.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/testing/test_support.hpp"
 #include "reference/reference.hpp"
 
 #include <airlight/method.hpp>

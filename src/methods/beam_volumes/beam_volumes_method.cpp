@@ -1,10 +1,10 @@
 #include "methods/beam_volumes/lit_pyramids.hpp"
-#include "methods/kit/gpu_method.hpp"
-#include "methods/kit/lit_interval_pass.hpp"
-#include "methods/kit/memory_needs.hpp"
+#include "methods/kit/method/gpu_method.hpp"
+#include "methods/kit/counting/lit_interval_pass.hpp"
+#include "methods/kit/method/memory_needs.hpp"
 
 #include "gpu/program.hpp"
-#include "methods/kit/registry.hpp"
+#include "methods/kit/method/registry.hpp"
 
 #include <memory>
 
@@ -53,7 +53,7 @@ private:
     }
     glNamedBufferSubData(faces_.id(), 0, faces.size() * sizeof(kit::CountedTriangle), faces.data());
     const gpu::Program& program = gpu::cached_program(
-        {{GL_VERTEX_SHADER, "methods/kit/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/beam_volumes/signed.frag.glsl"}},
+        {{GL_VERTEX_SHADER, "methods/kit/counting/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/beam_volumes/signed.frag.glsl"}},
         frame.defines() + kit::lit_interval_defines());
     glUseProgram(program.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kit::binding::first_free_storage, faces_.id());

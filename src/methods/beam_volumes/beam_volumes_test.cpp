@@ -4,7 +4,7 @@
 // to float cancellation where a light is in view.
 #include "core/metrics.hpp"
 #include "methods/beam_volumes/lit_pyramids.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/testing/test_support.hpp"
 
 #include <airlight/method.hpp>
 #include <glm/trigonometric.hpp>

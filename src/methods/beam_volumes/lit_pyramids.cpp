@@ -1,7 +1,7 @@
 #include "methods/beam_volumes/lit_pyramids.hpp"
 
 #include "methods/beam_volumes/pyramid_sides.hpp"
-#include "methods/kit/light_bounds.hpp"
+#include "methods/kit/frame/view_reach.hpp"
 
 #include <algorithm>
 #include <chrono>

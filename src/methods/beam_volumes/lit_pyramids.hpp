@@ -7,7 +7,7 @@
 // triangles the kit's lit-interval pass counts.
 #include "geometry/beam_tree.hpp"
 #include "geometry/conforming_set.hpp"
-#include "methods/kit/lit_interval_pass.hpp"
+#include "methods/kit/counting/lit_interval_pass.hpp"
 
 #include <airlight/method.hpp>
 #include <airlight/scene.hpp>

@@ -8,8 +8,8 @@
 // (lit_intervals.comp.glsl) the sum cancels large terms in float where Γ is
 // large (docs/decisions.md).
 #define SCENE_IN_REGISTERS
-#include "methods/kit/closed_form.glsl"
-#include "methods/kit/crossing_fragment.glsl"
+#include "methods/kit/gamma/closed_form.glsl"
+#include "methods/kit/counting/crossing_fragment.glsl"
 
 layout(location = 0) out vec4 airlight;
 

@@ -2,7 +2,7 @@
 // slabs (docs/design.md §6): the fully lit slabs integrated exactly by Γ, the
 // uncertain ones sampled as planes does, meeting without a seam.
 #include "core/metrics.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/testing/test_support.hpp"
 
 #include <airlight/method.hpp>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-#include "methods/kit/plane_method.hpp"
-#include "methods/kit/registry.hpp"
+#include "methods/kit/planes/plane_method.hpp"
+#include "methods/kit/method/registry.hpp"
 
 #include <memory>
 

@@ -3,7 +3,7 @@
 // inner volumes prove part of the lit region unlit.
 #include "core/metrics.hpp"
 #include "core/test_paths.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/testing/test_support.hpp"
 
 #include <airlight/method.hpp>
 #include <gtest/gtest.h>

@@ -45,7 +45,7 @@
 // Specialized by GatherPass: BLOCK (M), VERTICAL, DEPTH_AWARE, NORMALIZED and
 // GUARD, so that each pass's loops have constant trip counts and only the
 // vertical pass multiplies by the light guide.
-#include "methods/kit/march.glsl"
+#include "methods/kit/march/march.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 #ifdef VERTICAL

@@ -3,7 +3,7 @@
 // horizontal then a vertical pass, each adding M consecutive pixels, optionally
 // leaving out neighbours across silhouettes (depth-aware).
 #include "gpu/program.hpp"
-#include "methods/kit/scene_frame.hpp"
+#include "methods/kit/frame/scene_frame.hpp"
 
 namespace airlight::methods {
 

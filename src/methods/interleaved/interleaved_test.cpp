@@ -7,8 +7,8 @@
 #include "geometry/camera.hpp"
 #include "gpu/context.hpp"
 #include "methods/interleaved/gather_pass.hpp"
-#include "methods/kit/march_pass.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/march/march_pass.hpp"
+#include "methods/kit/testing/test_support.hpp"
 #include "reference/ray_caster.hpp"
 
 #include <gtest/gtest.h>

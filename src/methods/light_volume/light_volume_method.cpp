@@ -1,8 +1,8 @@
-#include "methods/kit/gpu_method.hpp"
-#include "methods/kit/light_volume_mesh.hpp"
-#include "methods/kit/lit_interval_pass.hpp"
-#include "methods/kit/memory_needs.hpp"
-#include "methods/kit/registry.hpp"
+#include "methods/kit/method/gpu_method.hpp"
+#include "methods/kit/light_volume/light_volume_mesh.hpp"
+#include "methods/kit/counting/lit_interval_pass.hpp"
+#include "methods/kit/method/memory_needs.hpp"
+#include "methods/kit/method/registry.hpp"
 
 #include <memory>
 

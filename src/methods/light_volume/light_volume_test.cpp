@@ -4,7 +4,7 @@
 // a shadow.
 #include "core/metrics.hpp"
 #include "core/warning.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/testing/test_support.hpp"
 
 #include <airlight/method.hpp>
 #include <gtest/gtest.h>

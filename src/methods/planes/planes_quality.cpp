@@ -1,5 +1,5 @@
 // planes's rows of the quality table (docs/design.md §6), each tolerance beside its reason.
-#include "methods/kit/quality.hpp"
+#include "methods/kit/testing/quality.hpp"
 
 namespace airlight::kit::test {
 namespace {

@@ -2,7 +2,7 @@
 // planes (Fig. 5), the lattice (Fig. 6), float accumulation, clipping to the
 // light's influence volume, jitter, and a scene with every feature.
 #include "core/metrics.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/testing/test_support.hpp"
 #include "reference/reference.hpp"
 
 #include <airlight/scene.hpp>

@@ -1,7 +1,7 @@
-#include "methods/kit/gpu_method.hpp"
-#include "methods/kit/march_pass.hpp"
+#include "methods/kit/method/gpu_method.hpp"
+#include "methods/kit/march/march_pass.hpp"
 
-#include "methods/kit/registry.hpp"
+#include "methods/kit/method/registry.hpp"
 
 #include <memory>
 

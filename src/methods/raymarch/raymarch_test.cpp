@@ -3,8 +3,8 @@
 // the mean, every feature of the model is summed, and no configuration produces
 // NaN or Inf.
 #include "core/metrics.hpp"
-#include "methods/kit/test_support.hpp"
-#include "methods/kit/noise.hpp"
+#include "methods/kit/testing/test_support.hpp"
+#include "methods/kit/sampling/noise.hpp"
 
 #include <airlight/method.hpp>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "methods/kit/registry.hpp"
+#include "methods/kit/method/registry.hpp"
 #include "reference/reference.hpp"
 
 #include <airlight/error.hpp>

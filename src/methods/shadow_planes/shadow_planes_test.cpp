@@ -4,7 +4,7 @@
 // capacity, and never a NaN.
 #include "core/metrics.hpp"
 #include "geometry/shadow_edges.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/testing/test_support.hpp"
 
 #include <airlight/method.hpp>
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 // and the casters' own triangles where a view ray may cross them before it
 // reaches the near plane (add_caps).
 #include "geometry/shadow_edges.hpp"
-#include "methods/kit/lit_interval_pass.hpp"
+#include "methods/kit/counting/lit_interval_pass.hpp"
 
 #include <airlight/method.hpp>
 #include <airlight/scene.hpp>

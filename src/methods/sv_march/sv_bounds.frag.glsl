@@ -5,8 +5,8 @@
 // i's front, cleared to +∞; layer 2i + 1 its back, cleared to 0. A crossing
 // beyond the visible surface says the ray ends inside the shell: the back
 // clamps to the surface's distance.
-#include "methods/kit/scene.glsl"
-#include "methods/kit/crossing_fragment.glsl"
+#include "methods/kit/frame/scene.glsl"
+#include "methods/kit/counting/crossing_fragment.glsl"
 
 layout(r32ui, binding = 0) uniform coherent uimage2DArray bounds;
 

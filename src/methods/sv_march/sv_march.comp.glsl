@@ -14,9 +14,9 @@
 // sampling and jitter), per light, N samples over that light's stretch only.
 // The exact parts are added by the pass's first dispatch.
 #define SCENE_IN_REGISTERS
-#include "methods/kit/lit_gamma.glsl"
-#include "methods/kit/march.glsl"
-#include "methods/kit/march_pass.glsl"
+#include "methods/kit/gamma/lit_gamma.glsl"
+#include "methods/kit/march/march.glsl"
+#include "methods/kit/march/march_pass.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D airlight_out;  // accumulated over the dispatches

@@ -1,10 +1,10 @@
 #include "gpu/program.hpp"
-#include "methods/kit/gpu_method.hpp"
-#include "methods/kit/light_volume_mesh.hpp"
-#include "methods/kit/lit_interval_pass.hpp"
-#include "methods/kit/march_pass.hpp"
-#include "methods/kit/memory_needs.hpp"
-#include "methods/kit/registry.hpp"
+#include "methods/kit/method/gpu_method.hpp"
+#include "methods/kit/light_volume/light_volume_mesh.hpp"
+#include "methods/kit/counting/lit_interval_pass.hpp"
+#include "methods/kit/march/march_pass.hpp"
+#include "methods/kit/method/memory_needs.hpp"
+#include "methods/kit/method/registry.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -71,7 +71,7 @@ private:
     for (int layer = 0; layer < layers_; ++layer)
       glClearTexSubImage(bounds_.id(), 0, 0, 0, layer, width_, height_, 1, GL_RED_INTEGER, GL_UNSIGNED_INT,
                          layer % 2 == 0 ? &infinity : &zero);
-    const gpu::Program& program = gpu::cached_program({{GL_VERTEX_SHADER, "methods/kit/crossings.vert.glsl"},
+    const gpu::Program& program = gpu::cached_program({{GL_VERTEX_SHADER, "methods/kit/counting/crossings.vert.glsl"},
                                                        {GL_FRAGMENT_SHADER, "methods/sv_march/sv_bounds.frag.glsl"}},
                                                       frame.defines() + kit::lit_interval_defines() +
                                                           kit::CountedDraw::defines());

@@ -1,7 +1,7 @@
 // sv_march (Kingston 2018 §4.3) against raymarch and the CPU reference
 // (docs/design.md §6).
 #include "core/metrics.hpp"
-#include "methods/kit/test_support.hpp"
+#include "methods/kit/testing/test_support.hpp"
 
 #include <airlight/method.hpp>
 #include <gtest/gtest.h>

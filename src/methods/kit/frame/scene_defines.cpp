@@ -1,0 +1,96 @@
+#include "methods/kit/frame/scene_defines.hpp"
+
+#include <type_traits>
+
+namespace airlight::kit {
+namespace {
+
+using shader::SceneLight;
+using shader::SceneLobe;
+using shader::SceneVolume;
+
+template <typename T>
+std::string glsl_array(const char* type, const std::vector<T>& values) {
+  std::string text = std::string(type) + "[](";
+  if (values.empty()) text += std::is_same_v<T, bool> ? "false" : "0";  // GLSL has no empty arrays
+  for (size_t k = 0; k < values.size(); ++k) {
+    if (k) text += ", ";
+    if constexpr (std::is_same_v<T, bool>)
+      text += values[k] ? "true" : "false";
+    else
+      text += std::to_string(values[k]);
+  }
+  return text + ")";
+}
+
+// FOR_EACH_<WHAT>(F) expands to F(0) F(1) … F(n − 1): loops over lights and
+// volumes unrolled by the preprocessor, so that every index is a constant.
+std::string for_each(const char* what, size_t n) {
+  std::string text = std::string("#define FOR_EACH_") + what + "(F)";
+  for (size_t k = 0; k < n; ++k) text += " F(" + std::to_string(k) + ")";
+  return text + "\n";
+}
+
+// Σ_k weight_k · phase_lobe(type_k, g_k, c) over lobes [first, first + count),
+// each type a constant: the phase function a medium has, and nothing else.
+std::string phase_expression(const std::vector<SceneLobe>& lobes, int first, int count) {
+  std::string text = "(0.0";
+  for (int k = first; k < first + count; ++k)
+    text += " + LOBE(" + std::to_string(k) + ").weight * phase_lobe(" + std::to_string(lobes[k].type) + ", LOBE(" +
+            std::to_string(k) + ").g, c)";
+  return text + ")";
+}
+
+// Whether lobes [first, first + count) are all isotropic: closed_form.glsl may
+// then take Sun et al.'s path.
+bool isotropic(const std::vector<SceneLobe>& lobes, int first, int count) {
+  for (int k = first; k < first + count; ++k)
+    if (lobes[k].type != static_cast<int>(PhaseType::isotropic)) return false;
+  return true;
+}
+
+bool grey(const glm::vec3& c) { return c.r == c.g && c.g == c.b; }
+
+}  // namespace
+
+std::string structure_defines(const std::vector<SceneLight>& lights, const std::vector<SceneVolume>& volumes,
+                              const std::vector<SceneLobe>& lobes, int medium_lobes, const FrameInputs& in) {
+  std::vector<int> types, shadows;
+  std::vector<bool> gobos, beams, edges;
+  for (const SceneLight& l : lights) {
+    types.push_back(l.type);
+    edges.push_back(l.edge > 0.0f);
+    shadows.push_back(l.shadow_kind);
+    gobos.push_back(l.gobo_layer >= 0);
+    beams.push_back(l.beam_length > 0.0f);
+  }
+  bool grey_media = grey(in.medium.sigma_s) && grey(in.medium.sigma_t());
+  for (const SceneVolume& v : volumes) grey_media = grey_media && grey(v.sigma_s) && grey(v.sigma_t);
+  std::string d;
+  d += "#define LIGHT_COUNT " + std::to_string(lights.size()) + "\n";
+  d += "#define VOLUME_COUNT " + std::to_string(volumes.size()) + "\n";
+  d += "#define LOBE_COUNT " + std::to_string(lobes.size()) + "\n";
+  d += "#define LIGHT_MODEL_TYPE " + std::to_string(static_cast<int>(in.light_model.type)) + "\n";
+  d += std::string("#define GREY_MEDIA ") + (grey_media ? "1" : "0") + "\n";
+  d += "#define LIGHT_TYPES " + glsl_array("int", types) + "\n";
+  d += "#define LIGHT_SHADOWS " + glsl_array("int", shadows) + "\n";
+  d += "#define LIGHT_GOBOS " + glsl_array("bool", gobos) + "\n";
+  d += "#define LIGHT_BEAMS " + glsl_array("bool", beams) + "\n";
+  d += "#define LIGHT_EDGES " + glsl_array("bool", edges) + "\n";
+  d += for_each("LIGHT", lights.size()) + for_each("VOLUME", volumes.size()) + for_each("LOBE", lobes.size());
+  d += "#define MEDIUM_PHASE(c) " + phase_expression(lobes, 0, medium_lobes) + "\n";
+  d += std::string("#define MEDIUM_ISOTROPIC ") + (isotropic(lobes, 0, medium_lobes) ? "1" : "0") + "\n";
+  std::string volume_phase = "0.0";  // VOLUME_PHASE(v, c): a chain of constant conditions that folds
+  for (size_t v = volumes.size(); v-- > 0;)
+    volume_phase = "((v) == " + std::to_string(v) + " ? " +
+                   phase_expression(lobes, volumes[v].first_lobe, volumes[v].lobe_count) + " : " + volume_phase + ")";
+  d += "#define VOLUME_PHASE(v, c) " + volume_phase + "\n";
+  std::string volume_isotropic = "false";  // VOLUME_ISOTROPIC(v): v is one of the isotropic volumes; folds too
+  for (size_t v = 0; v < volumes.size(); ++v)
+    if (isotropic(lobes, volumes[v].first_lobe, volumes[v].lobe_count))
+      volume_isotropic += " || (v) == " + std::to_string(v);
+  d += "#define VOLUME_ISOTROPIC(v) (" + volume_isotropic + ")\n";
+  return d;
+}
+
+}  // namespace airlight::kit

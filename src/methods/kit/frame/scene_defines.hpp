@@ -1,0 +1,18 @@
+#pragma once
+// The scene's structure as GLSL constants, for SceneFrame::defines() (see
+// scene_frame.hpp and docs/design.md §2): light count and kinds, volume count,
+// the phase function of constant lobe types, the light model, grey media, and
+// FOR_EACH_* macros that unroll loops over lights, volumes and lobes.
+#include "methods/kit/frame/frame_data.hpp"
+
+#include <airlight/method.hpp>
+#include <string>
+#include <vector>
+
+namespace airlight::kit {
+
+std::string structure_defines(const std::vector<shader::SceneLight>& lights,
+                              const std::vector<shader::SceneVolume>& volumes,
+                              const std::vector<shader::SceneLobe>& lobes, int medium_lobes, const FrameInputs& in);
+
+}  // namespace airlight::kit

@@ -1,0 +1,164 @@
+#pragma once
+// The shared frame (docs/design.md §3): what every GPU method receives. At
+// prepare, what the scene fixes: meshes (in object space), bounded volumes,
+// gobos. Per frame, from FrameInputs: the camera, lights, medium and object
+// transforms, then a G-buffer (eye distance, normals, albedo), one shadow map
+// per light and the surface term L_surf·T(d) (the reference's surface pass,
+// src/reference/reference.cpp, on the GPU) — or, in an engine's frame, its
+// depth buffer and shadow maps converted to airlight's conventions. Shaders
+// reach it all through methods/kit/frame/scene.glsl at the binding points below.
+//
+// Pixels follow geometry::primary_ray (docs/design.md §5): GL's bottom-left origin, so
+// GL row y is image row H−1−y; read_image() flips back to top row first.
+#include "gpu/gl.hpp"
+#include "gpu/timer.hpp"
+#include "methods/kit/frame/frame_data.hpp"
+#include "methods/kit/frame/shadows/shadow_projection.hpp"
+
+#include <airlight/engine.hpp>
+#include <airlight/image.hpp>
+#include <airlight/method.hpp>
+#include <airlight/scene.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace airlight::kit {
+
+using gpu::Buffer;
+using gpu::Framebuffer;
+using gpu::PassTimer;
+using gpu::Program;
+using gpu::Texture;
+using gpu::VertexArray;
+
+// Binding points of the frame's buffers and textures, shared with GLSL through
+// SceneFrame::defines() (scene.glsl uses the BINDING_* macros). Methods use image unit
+// 0 for their output and texture units / storage bindings from the first_free_*.
+namespace binding {
+inline constexpr GLuint frame_block = 0;     // uniform block FrameBlock (std140)
+inline constexpr GLuint lights = 0;          // SSBO SceneLight[] (std430)
+inline constexpr GLuint volumes = 1;         // SSBO SceneVolume[]
+inline constexpr GLuint lobes = 2;           // SSBO PhaseLobe[] (medium's, then each volume's)
+inline constexpr GLuint face_normals = 3;    // SSBO vec4[] per triangle (G-buffer pass only)
+inline constexpr GLuint objects = 4;         // SSBO ObjectTransform[] per mesh (G-buffer and shadow passes)
+inline constexpr GLuint first_free_storage = 8;
+inline constexpr GLuint distance = 0;        // sampler2D R32F: eye distance along the pixel ray
+inline constexpr GLuint normal = 1;          // sampler2D RGBA32F: shading normal, facing the eye
+inline constexpr GLuint geometric_normal = 2; // sampler2D RGBA32F: triangle normal, facing the eye
+inline constexpr GLuint albedo = 3;          // sampler2D RGBA32F: rgb albedo, a = 1 where a surface is hit
+inline constexpr GLuint gobos = 4;           // sampler2DArray RGBA32F, one layer per gobo
+inline constexpr GLuint shadow_maps = 5;     // sampler2DArray R32F, one layer per 2D shadow map
+inline constexpr GLuint shadow_cubes = 6;    // samplerCubeArray R32F, one cube per point / wide spot
+inline constexpr GLuint engine_input = 7;    // an engine's depth or shadow texture while it is converted
+inline constexpr GLuint first_free_texture = 8;
+}  // namespace binding
+
+// "#define BINDING_… n" for every binding point.
+std::string binding_defines();
+
+struct FrameSettings {
+  int shadow_resolution = 1024;  // texels per side of each shadow map (and cube face)
+  float shadow_bias = 1.0f;      // in shadow-map texels at the point (see scene.glsl)
+};
+
+class SceneFrame {
+public:
+  // Uploads what the scene fixes; needs a current GL context. The gobos share
+  // one texture array as large as the widest and the tallest; each keeps its
+  // own texels at its layer's corner (never resampled: a 16×16 gobo resampled
+  // to 16×24 beside another lit random scene 176 21 % brighter than the reference).
+  void prepare(const Scene& scene);
+
+  // One frame: uploads `inputs`, then the G-buffer ("gbuffer", or "depth" from
+  // the engine's depth buffer), the shadow maps if any are needed ("shadow":
+  // drawn, or converted from the engine's) and the surface shading if needed ("surface"),
+  // each timed under that name. Throws InputError for inputs that do not fit
+  // the prepared scene, before any GL work.
+  // What a frame's method reads: shadow maps (none for the analytic method)
+  // and the surface term (none when only L_air is wanted).
+  struct Needs {
+    bool shadows = true, surface = true;
+  };
+  void render(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine, Needs needs,
+              PassTimer& timer);
+
+  // Binds the frame block, the scene SSBOs and the textures to binding::*.
+  void bind() const;
+
+  // What every program that includes scene.glsl is compiled with, for this
+  // frame: the binding points and the scene's structure as constants — light
+  // count and, per light, its type, shadow kind, gobo and beam; volume count;
+  // the phase lobes' types; the light model; whether the media are grey — so
+  // that a program pays only for what the scene has (docs/design.md §2). Data
+  // (positions, colours, σ, g) stays in the buffers: changing it recompiles
+  // nothing; changing the structure compiles each program once more.
+  const std::string& defines() const { return defines_; }
+
+  // This frame's inputs.
+  const FrameInputs& inputs() const { return inputs_; }
+  int width() const { return inputs_.width; }
+  int height() const { return inputs_.height; }
+  int light_count() const { return static_cast<int>(inputs_.lights.size()); }
+  const Texture& distance() const { return distance_; }
+  // DEPTH_COMPONENT32F of the G-buffer pass (1 where no surface is hit), for
+  // methods that rasterize with the depth test against the scene.
+  const Texture& depth() const { return depth_; }
+  const Texture& albedo() const { return albedo_; }  // rgb albedo, a = 1 where a surface is hit
+  const Texture& surface() const { return surface_; }
+
+private:
+  struct ShadowLayout {  // how many 2D maps and cube maps the lights use
+    int maps = 0, cubes = 0;
+    bool operator==(const ShadowLayout&) const = default;
+  };
+  struct ShadowDraw {  // one 2D map or one cube face of a light
+    int light = 0;
+    bool cube = false;
+    int layer = 0;  // array layer (2D), or 6·cube + face
+    glm::mat4 matrix{1.0f};
+    const EngineShadow* engine = nullptr;  // converted from the engine's map instead of drawn
+  };
+
+  void upload_meshes(const Scene& scene);
+  void upload_volumes(const Scene& scene);
+  void upload_gobos(const Scene& scene);
+  struct Media {  // what upload_medium put in the buffers
+    std::vector<shader::SceneLobe> lobes;
+    std::vector<shader::SceneVolume> volumes;
+  };
+  void upload_inputs(const FrameSettings& settings, const EngineFrame* engine, bool shadows);
+  Media upload_medium();
+  std::vector<shader::SceneLight> upload_lights(const EngineFrame* engine, int resolution, bool shadows);
+  void resize(int width, int height);
+  void allocate_shadow_maps(const ShadowLayout& layout, int resolution);
+  void update_frame_block(const FrameSettings& settings);
+  void draw_gbuffer();
+  void import_depth(const EngineDepth& depth);
+  void draw_shadow_maps();
+  void draw_shadow_layer(const ShadowDraw& draw);
+  void import_shadow_layer(const ShadowDraw& draw);
+  void shade_surfaces();
+
+  Scene scene_;  // as prepared, meshes in object space
+  FrameInputs inputs_;
+  std::string defines_;
+  std::vector<ShadowDraw> shadow_draws_;
+  ShadowLayout shadow_layout_;
+  std::vector<const Image*> gobo_images_;  // per gobo layer
+  std::vector<Bounds> caster_bounds_;  // per mesh, in object space (caster_bounds)
+  int index_count_ = 0, caster_index_count_ = 0, shadow_resolution_ = 0;
+
+  VertexArray vertex_array_;
+  Buffer vertices_, indices_, face_normals_, objects_;
+  Buffer frame_block_, lights_, volumes_, lobes_;
+  Texture gobos_;
+  Texture distance_, normal_, geometric_normal_, albedo_, depth_, surface_;
+  Framebuffer gbuffer_fbo_, shadow_fbo_;
+  Texture shadow_maps_, shadow_cubes_, shadow_depth_;
+  gpu::Sampler nearest_;  // reads engine textures as stored, whatever their parameters
+};
+
+}  // namespace airlight::kit

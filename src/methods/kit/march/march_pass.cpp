@@ -1,0 +1,90 @@
+#include "methods/kit/march/march_pass.hpp"
+
+#include "gpu/program.hpp"
+#include "methods/kit/sampling/noise.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace airlight::kit {
+namespace {
+
+constexpr GLuint jitter_unit = kit::binding::first_free_texture;
+
+// A pixel's own samples per dispatch; the march takes ceil(N / M² / that)
+// dispatches, accumulating in the target. llvmpipe ends an invocation's loops
+// after 65535 iterations counted over all its loops (gallivm
+// LP_MAX_TGSI_LOOP_ITERATIONS), silently: with the per-light, per-lobe and
+// per-volume loops inside each step, N = 4096 in one dispatch lost the end of
+// the rays. 64 samples leave ~1000 inner iterations per sample, and keep each
+// dispatch short for GPU watchdogs too. (Equiangular sampling marches each
+// point or spot light separately: each sample index still evaluates each light
+// once.) With interleaved's guard, a pixel beside a light's image marches every
+// index of the dispatch's M² strides, so a dispatch spans at most 1024 indices.
+int samples_per_dispatch(int block) { return std::max(1, std::min(64, 1024 / (block * block))); }
+
+const std::vector<std::string> samplings{"uniform", "equiangular"};  // in Sampling's order
+
+}  // namespace
+
+std::vector<SettingSpec> march_settings() {
+  using T = SettingSpec::Type;
+  return {{"steps", T::integer, 64, 1, 4096, {},
+           "samples N per view ray (per light with sampling=equiangular), at the middle of each step: the "
+           "error falls as 1/N² where the integrand is smooth over a step, as 1/N across cone and shadow edges"},
+          {"jitter", T::choice, 0, 0, 0, jitter_choices,
+           "per-pixel offset of the samples within their steps (Kingston §5.1.1): none = the middle, "
+           "white = hashed noise, blue = 64×64 void-and-cluster noise"},
+          {"sampling", T::choice, 1, 0, 0, samplings,
+           "where the steps go: equiangular (the default) = a march per point or spot light, even in the angle "
+           "seen from the light (Kulla & Fajardo 2012), over the part of the ray inside a spot's cone: the 1/r² "
+           "peak near a light is integrated exactly; uniform = even steps in distance (the documents')"}};
+}
+
+MarchSettings MarchSettings::from(const Settings& s, int block, bool normalized, bool guard) {
+  return {s.integer("steps"), s.option<Jitter>("jitter"), s.option<Sampling>("sampling"), block, normalized, guard};
+}
+
+void MarchPass::prepare() {
+  const std::vector<float> offsets = settings_.jitter == Jitter::blue ? blue_noise() : white_noise();
+  noise_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32F, noise_size, noise_size);
+  glTextureSubImage2D(noise_.id(), 0, 0, 0, noise_size, noise_size, GL_RED, GL_FLOAT, offsets.data());
+}
+
+// The march's settings as constants of its program (march.comp.glsl).
+std::string MarchPass::defines() const {
+  std::string d = extra_defines_ + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n";
+  d += "#define SAMPLING " + std::to_string(static_cast<int>(settings_.sampling)) + "\n";
+  if (settings_.jitter != Jitter::none) d += "#define JITTER\n";
+  if (settings_.normalized) d += "#define NORMALIZED\n";
+  if (settings_.guard) d += "#define GUARD\n";
+  return d;
+}
+
+void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
+  const int stride = settings_.block * settings_.block;
+  const int own_samples = (settings_.steps + stride - 1) / stride;  // of pixel q = 0, the most
+  const gpu::Program& program = gpu::cached_compute_program(program_, frame.defines() + defines());
+  glUseProgram(program.id());
+  gpu::set_uniform(program, "steps", settings_.steps);
+  gpu::set_uniform(program, "block", settings_.block);
+  glBindTextureUnit(jitter_unit, noise_.id());
+  glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  if (frame.width() != width_ || frame.height() != height_) {
+    width_ = frame.width();
+    height_ = frame.height();
+    if (settings_.normalized) guide_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
+    if (settings_.guard) spread_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
+  }
+  if (settings_.normalized) glBindImageTexture(1, guide_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  if (settings_.guard) glBindImageTexture(2, spread_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  const int per_dispatch = samples_per_dispatch(settings_.block);
+  for (int first = 0; first < own_samples; first += per_dispatch) {
+    gpu::set_uniform(program, "first_sample", first);
+    gpu::set_uniform(program, "sample_count", std::min(per_dispatch, own_samples - first));
+    gpu::dispatch_pixels(frame.width(), frame.height());
+  }
+  light_samples_ = static_cast<double>(frame.width()) * frame.height() * settings_.steps / stride * frame.light_count();
+}
+
+}  // namespace airlight::kit

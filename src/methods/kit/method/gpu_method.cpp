@@ -1,0 +1,90 @@
+#include "methods/kit/method/gpu_method.hpp"
+
+#include "gpu/context.hpp"
+#include "gpu/program.hpp"
+#include "gpu/state.hpp"
+#include "methods/kit/engine/engine_output.hpp"
+#include "methods/kit/method/memory_needs.hpp"
+
+#include <airlight/error.hpp>
+#include <chrono>
+
+namespace airlight::kit {
+
+std::vector<SettingSpec> gpu_settings(std::vector<SettingSpec> own) {
+  using T = SettingSpec::Type;
+  std::vector<SettingSpec> specs{
+      {"shadow_resolution", T::integer, 1024, 64, 8192, {},
+       "texels per side of each shadow map and cube face: shadow edges are resolved to one texel"},
+      {"shadow_bias", T::real, 1.0, 0.0, 16.0, {},
+       "shadow-map bias in texels at the point: surfaces move this far along their normal (1 clears "
+       "self-shadowing at every incidence angle with nearest lookup); medium points take none"}};
+  specs.insert(specs.end(), own.begin(), own.end());
+  return specs;
+}
+
+MemoryEstimate gpu_memory(MemoryEstimate own) {
+  return [own = std::move(own)](const Scene& scene, const Settings& settings, int width, int height) {
+    std::vector<MemoryNeed> needs = shadow_map_needs(scene, settings);
+    needs.push_back(geometry_need(scene));
+    if (own)
+      for (MemoryNeed& need : own(scene, settings, width, height)) needs.push_back(std::move(need));
+    return needs;
+  };
+}
+
+GpuMethod::GpuMethod(const Settings& settings)
+    : frame_settings_{settings.integer("shadow_resolution"), static_cast<float>(settings.real("shadow_bias"))} {}
+
+void GpuMethod::prepare(const Scene& scene) {
+  context_ = &gpu::Context::current();
+  gpu::SavedState state;
+  frame_.prepare(scene);
+  prepare_airlight(scene);
+  rendered_ = false;
+  context_->check("prepare");
+}
+
+void GpuMethod::render_frame(const FrameInputs& inputs) { draw(inputs, nullptr); }
+
+void GpuMethod::render_frame(const FrameInputs& inputs, const EngineFrame& engine) { draw(inputs, &engine); }
+
+void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
+  if (!context_) throw Failure("render_frame() before prepare()");
+  if (engine) check_engine_frame(*engine, inputs);
+  gpu::SavedState state;
+  PassTimer timer;
+  // Shadow maps for the method, or for the surface term (its lights are shadowed whatever the method).
+  const bool surface = inputs.surface && (!engine || engine->target.surface);
+  frame_.render(inputs, frame_settings_, engine, {uses_shadow_maps() || surface, surface}, timer);
+  if (inputs.width != width_ || inputs.height != height_) {
+    airlight_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, inputs.width, inputs.height);
+    width_ = inputs.width;
+    height_ = inputs.height;
+  }
+  frame_.bind();
+  render_airlight(frame_, airlight_, timer);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  if (engine) write_engine_target(engine->target, frame_, airlight_, timer);
+  times_ = timer.results();
+  rendered_ = true;
+  context_->check("render");
+}
+
+FrameNumbers GpuMethod::numbers() const { return {times_, stats()}; }
+
+FrameImages GpuMethod::read_back() {
+  if (!rendered_) throw Failure("read_back() before render_frame()");
+  gpu::SavedState state;
+  const auto start = std::chrono::steady_clock::now();
+  FrameImages images;
+  images.airlight = gpu::read_image(airlight_, width_, height_);
+  images.surface = gpu::read_image(frame_.surface(), width_, height_);
+  images.times = times_;
+  images.readback_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  images.stats = stats();
+  context_->check("read back");
+  return images;
+}
+
+}  // namespace airlight::kit

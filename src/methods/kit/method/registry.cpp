@@ -1,0 +1,48 @@
+#include "methods/kit/method/registry.hpp"
+
+#include <airlight/error.hpp>
+#include <algorithm>
+#include <utility>
+
+namespace airlight {
+namespace {
+
+// Filled by the Registration objects during static initialization, in no
+// particular order across files: sorted when first read.
+std::vector<std::pair<int, MethodInfo (*)()>>& registrations() {
+  static std::vector<std::pair<int, MethodInfo (*)()>> all;
+  return all;
+}
+
+}  // namespace
+
+kit::Registration::Registration(int order, MethodInfo (*info)()) { registrations().emplace_back(order, info); }
+
+const std::vector<MethodInfo>& registered_methods() {
+  static const std::vector<MethodInfo> all = [] {
+    auto sorted = registrations();
+    std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<MethodInfo> infos;
+    for (const auto& [order, info] : sorted) infos.push_back(info());
+    return infos;
+  }();
+  return all;
+}
+
+const MethodInfo& find_method(const std::string& name, const std::string& option) {
+  for (const auto& m : registered_methods())
+    if (m.name == name) return m;
+  std::string known;
+  for (const auto& m : registered_methods()) known += (known.empty() ? "" : ", ") + m.name;
+  throw InputError(option, name, "unknown method (known: " + known + ")");
+}
+
+Image select_pass(const FrameImages& frame, Pass pass) {
+  if (pass == Pass::airlight) return frame.airlight;
+  if (pass == Pass::surface) return frame.surface;
+  Image composite = frame.surface;  // L = L_surf·T(d) + L_air (docs/design.md §1)
+  for (size_t i = 0; i < composite.pixels.size(); ++i) composite.pixels[i] += frame.airlight.pixels[i];
+  return composite;
+}
+
+}  // namespace airlight

@@ -1,0 +1,26 @@
+#pragma once
+// A method that is the plane pass alone (plane_pass.hpp): planes (Dobashi 2000)
+// and Nilsson's two hybrids differ only in how the planes are cut by regions.
+#include "methods/kit/method/gpu_method.hpp"
+#include "methods/kit/planes/plane_pass.hpp"
+
+namespace airlight::kit {
+
+class PlaneMethod final : public GpuMethod {
+public:
+  PlaneMethod(const Settings& s, PlaneRegions regions) : GpuMethod(s), pass_(PlaneSettings::from(s, regions)) {}
+
+private:
+  void prepare_airlight(const Scene& scene) override { pass_.prepare(scene); }
+
+  void render_airlight(const SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
+    gpu::ScopedPass pass(timer, "airlight");
+    pass_.run(frame, target);
+  }
+
+  std::vector<std::pair<std::string, double>> stats() const override { return pass_.stats(); }
+
+  PlanePass pass_;
+};
+
+}  // namespace airlight::kit

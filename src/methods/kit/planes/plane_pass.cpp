@@ -1,0 +1,268 @@
+#include "methods/kit/planes/plane_pass.hpp"
+
+#include "gpu/program.hpp"
+#include "methods/kit/method/memory_needs.hpp"
+#include "methods/kit/sampling/noise.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cmath>
+
+namespace airlight::kit {
+namespace {
+
+constexpr GLuint jitter_unit = binding::first_free_texture;
+constexpr int max_planes = 8192;  // per light: dz never below 1/8192 of the lit depth
+
+// Two triangles per cell of an n×n lattice over (n + 1)² vertices, row-major.
+std::vector<GLuint> lattice_indices(int n) {
+  std::vector<GLuint> indices;
+  const auto at = [n](int i, int j) { return static_cast<GLuint>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      indices.insert(indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+  return indices;
+}
+
+}  // namespace
+
+std::vector<SettingSpec> plane_settings(bool regions) {
+  using T = SettingSpec::Type;
+  std::vector<SettingSpec> all{{"planes", T::integer, 100, 1, max_planes, {},
+           "n: virtual planes per light, evenly spaced in view depth from the eye to the far end of the light's "
+           "lit region (Dobashi Fig. 5: 15, 30, 75; Table 1: 50 and 150)"},
+          {"spacing", T::real, 0.0, 0.0, 100.0, {},
+           "dz: the planes' spacing in metres of view depth instead of their count (0 = use planes)"},
+          {"lattice", T::integer, 0, 0, 512, {},
+           "ξ on an n×n lattice mesh per plane, interpolated across its cells (Dobashi §5.1, Fig. 6: 5, 20, 80); "
+           "0 = ξ per fragment. The light map, the cone and the shadow test are per fragment either way"},
+          {"jitter", T::choice, 0, 0, 0, jitter_choices,
+           "per-pixel offset of the samples within their slabs (Dobashi §7): none = the middle; white or blue "
+           "noise turn the planes' banding into noise"},
+          {"sampling", T::choice, 0, 0, 0, {"lit", "plane"},
+           "plane = Dobashi's: one sample per plane at the middle of its slab's part in front of the surface, "
+           "weighted by Δt; lit = the slab's piece cut to the light's lit interval (a spot's cone, a beam's box), "
+           "sampled evenly in the angle seen from a point or spot light with the falloff integrated exactly, and "
+           "with more samples where the piece sweeps a gobo, passes beside the light or crosses a dense medium, and cut "
+           "at bounded volumes' chord ends (lattice: ξ stays sampled)"},
+          {"clip", T::boolean, 1, 0, 1, {},
+           "clip the planes to the light's influence volume (a pyramid around a spot's cone, a beam's box), so "
+           "fragments outside it are never shaded (Nilsson 3.1)"}};
+  if (regions)  // each plane samples its slab's middle, where its regions are classified
+    std::erase_if(all, [](const SettingSpec& s) { return s.name == "lattice" || s.name == "jitter"; });
+  return all;
+}
+
+PlaneSettings PlaneSettings::from(const Settings& s, PlaneRegions regions) {
+  enum class Sampling { lit, plane };  // the `sampling` setting's choices, in order
+  const bool whole = regions == PlaneRegions::none;
+  return {s.integer("planes"),
+          s.real("spacing"),
+          whole ? s.integer("lattice") : 0,
+          whole ? s.option<Jitter>("jitter") : Jitter::none,
+          s.option<Sampling>("sampling") == Sampling::lit,
+          s.boolean("clip"),
+          regions};
+}
+
+void PlanePass::prepare(const Scene& scene) {
+  const std::vector<float> offsets = settings_.jitter == Jitter::blue ? blue_noise() : white_noise();
+  noise_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32F, noise_size, noise_size);
+  glTextureSubImage2D(noise_.id(), 0, 0, 0, noise_size, noise_size, GL_RED, GL_FLOAT, offsets.data());
+  const std::vector<GLuint> indices = lattice_indices(std::max(settings_.lattice, 1));
+  index_count_ = static_cast<int>(indices.size());
+  indices_ = gpu::make_buffer(indices.size() * sizeof(GLuint), indices.data());
+  mesh_ = gpu::make_vertex_array();  // no attributes: vertices come from gl_VertexID
+  glVertexArrayElementBuffer(mesh_.id(), indices_.id());
+  region_mesh_ = gpu::make_vertex_array();  // RegionVertex: position, then plane
+  glEnableVertexArrayAttrib(region_mesh_.id(), 0);
+  glVertexArrayAttribFormat(region_mesh_.id(), 0, 3, GL_FLOAT, GL_FALSE, offsetof(RegionVertex, position));
+  glVertexArrayAttribBinding(region_mesh_.id(), 0, 0);
+  glEnableVertexArrayAttrib(region_mesh_.id(), 1);
+  glVertexArrayAttribIFormat(region_mesh_.id(), 1, 1, GL_INT, offsetof(RegionVertex, plane));
+  glVertexArrayAttribBinding(region_mesh_.id(), 1, 0);
+  no_vertices_ = gpu::make_vertex_array();
+  fbo_ = gpu::make_framebuffer();
+  if (epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
+    GLuint id = 0;
+    glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
+    invocations_ = gpu::Query(id);
+  }
+  regions_.prepare(scene);
+  if (settings_.regions != PlaneRegions::none) slab_regions_.prepare(scene);
+}
+
+// A sample lies anywhere in its slab, up to dz/2 in depth, i.e. dz/(2 cos)
+// along its ray, from the middle where the clip distances and the regions are taken.
+float PlanePass::reach(const Slabs& s) const { return 0.5f * s.dz / cos_edge_; }
+
+std::vector<MemoryNeed> slab_region_needs(const Scene& scene, const Settings& settings, int, int) {
+  // Measured per plane and caster, the polygons and their beam-tree pieces
+  // (docs/decisions.md "Memory for settings").
+  constexpr double bytes_per_region = 3000.0;
+  constexpr double bytes_per_buffer = 2.0 * 8 * 3 * sizeof(RegionVertex);  // about 8 triangles, the buffer grown 2×
+  const double spacing = settings.real("spacing"), casters = caster_count(scene);
+  const double planes = std::clamp(spacing > 0.0 ? std::ceil(scene.camera.far / spacing) : settings.integer("planes"),
+                                   1.0, double(max_planes));
+  if (casters == 0.0 || scene.lights.empty()) return {};
+  return {{spacing > 0.0 ? "spacing" : "planes",
+           "the slab regions of " + counted(planes, "plane") + " across the bounding volumes of " +
+               counted(casters, "caster") + " (about 3 KB per plane and caster)",
+           bytes_per_region * planes * casters, bytes_per_buffer * planes * casters}};
+}
+
+PlanePass::Slabs PlanePass::slabs(const LightBounds& volume) const {
+  const double depth = lit_far_depth(volume, camera_, far_);
+  if (!(depth > 0.0)) return {};
+  const int count = settings_.spacing > 0.0 ? static_cast<int>(std::ceil(depth / settings_.spacing)) : settings_.planes;
+  const int n = std::clamp(count, 1, max_planes);
+  return {n, static_cast<float>(depth / n)};
+}
+
+void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
+  regions_.update(frame.inputs());
+  camera_ = geometry::camera_basis(frame.inputs().camera);
+  far_ = frame.inputs().camera.far;
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, frame.depth().id(), 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, frame.width(), frame.height());
+  // A plane passes where its near face is not behind the scene's depth; the
+  // fragment shader weighs only the part of its slab in front of the surface,
+  // so a tie passes (GL_LEQUAL), and no plane is clipped at the far plane
+  // (depth clamp): with far/near = 8·10⁴ a near face within 1 mm of a 0.4 m
+  // far plane rounds to the far plane's depth, and the slab holding a light
+  // just short of it was lost (random scene 554: rRMSE 1.16 at 1024 planes).
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glEnable(GL_DEPTH_CLAMP);
+  glDepthMask(GL_FALSE);  // the scene's depth is only tested against
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  for (GLenum c = 0; c < 8; ++c) glEnable(GL_CLIP_DISTANCE0 + c);
+  // cos of the angle between the view axis and the ray through an image corner
+  cos_edge_ = static_cast<float>(
+      1.0 / geometry::corner_distance(frame.inputs().camera, double(frame.width()) / frame.height(), 1.0));
+  glBindTextureUnit(jitter_unit, noise_.id());
+  planes_drawn_ = 0.0;
+  slab_regions_.reset();
+  if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
+  for (int i = 0; i < static_cast<int>(regions_.bounds().size()); ++i) draw_light(frame, i, regions_.bounds()[i]);
+  if (invocations_) {
+    glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+    GLuint64 count = 0;
+    glGetQueryObjectui64v(invocations_.id(), GL_QUERY_RESULT, &count);
+    fragments_ = static_cast<double>(count);
+  }
+  for (GLenum c = 0; c < 8; ++c) glDisable(GL_CLIP_DISTANCE0 + c);
+  glDisable(GL_BLEND);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_CLAMP);
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// Light `light`'s program for one part of its planes: its index and the
+// settings as constants (planes.frag.glsl).
+std::string PlanePass::defines(int light, Part part) const {
+  std::string d = "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n#define PLANE_LIGHT " +
+                  std::to_string(light) + "\n";
+  if (settings_.lattice > 0) d += "#define LATTICE_XI\n";
+  if (settings_.jitter != Jitter::none) d += "#define JITTER\n";
+  if (settings_.lit_sampling) d += "#define LIT_SAMPLING\n";
+  if (part == Part::fully_lit || part == Part::uncertain) d += "#define FULL_SLABS\n";
+  if (part == Part::cut_slabs) d += "#define CUT_SLABS\n";
+  if (part == Part::fully_lit)
+    d += settings_.regions == PlaneRegions::gamma ? "#define FULLY_LIT_GAMMA\n" : "#define FULLY_LIT\n";
+  return d;
+}
+
+void PlanePass::draw_light(const SceneFrame& frame, int light, const LightBounds& volume) {
+  const Slabs s = slabs(volume);
+  if (s.count == 0) return;
+  const std::vector<glm::vec4> clip = settings_.clip ? volume.clip : std::vector<glm::vec4>{};
+  if (settings_.regions == PlaneRegions::none)
+    draw(frame, light, Part::lattice, s, clip);
+  else
+    draw_regions(frame, light, s, clip);
+  planes_drawn_ += s.count;
+}
+
+// Nilsson §5.3–5.4 with every sample where planes would take it. A plane's
+// regions hold at its slab's middle, which is where the sample of a slab wholly
+// in front of the surface lies (sampling=plane): those slabs are drawn as the
+// fully lit and uncertain polygons (FULL_SLABS). The one slab per pixel that
+// the surface cuts samples elsewhere; a full-screen pass takes it with the
+// shadow test (CUT_SLABS). So sampling=plane gives planes' image, with fewer
+// fragments. Lit sampling's pieces and Γ over a fully lit slab reach the whole
+// slab: its regions are then taken with that margin (slab_regions.hpp).
+void PlanePass::draw_regions(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip) {
+  std::vector<glm::vec4> widened = clip;
+  for (glm::vec4& h : widened) h.w += reach(s);
+  slab_regions_.build(frame.inputs(), light, s.count, s.dz, reach(s), widened);
+  glEnable(GL_CULL_FACE);  // the regions' triangles face the eye (slab_regions.cpp)
+  for (const Part part : {Part::fully_lit, Part::uncertain}) {
+    upload(part == Part::fully_lit ? slab_regions_.fully_lit() : slab_regions_.uncertain());
+    draw(frame, light, part, s, clip);
+  }
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+  draw(frame, light, Part::cut_slabs, s, {});
+  glEnable(GL_DEPTH_TEST);
+}
+
+void PlanePass::upload(const std::vector<RegionVertex>& vertices) {
+  region_count_ = static_cast<int>(vertices.size());
+  if (vertices.empty()) return;
+  if (vertices.size() > region_capacity_) {
+    region_capacity_ = 2 * vertices.size();
+    region_vertices_ = gpu::make_buffer(region_capacity_ * sizeof(RegionVertex), nullptr);
+    glVertexArrayVertexBuffer(region_mesh_.id(), 0, region_vertices_.id(), 0, sizeof(RegionVertex));
+  }
+  glNamedBufferSubData(region_vertices_.id(), 0, vertices.size() * sizeof(RegionVertex), vertices.data());
+}
+
+void PlanePass::draw(const SceneFrame& frame, int light, Part part, const Slabs& s, const std::vector<glm::vec4>& clip) {
+  if (part != Part::lattice && part != Part::cut_slabs && region_count_ == 0) return;
+  const char* vertex = part == Part::lattice     ? "methods/kit/planes/planes.vert.glsl"
+                       : part == Part::cut_slabs ? "methods/kit/frame/fullscreen.vert.glsl"
+                                                 : "methods/kit/planes/region_planes.vert.glsl";
+  const gpu::Program& program = gpu::cached_program(
+      {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, "methods/kit/planes/planes.frag.glsl"}},
+      frame.defines() + defines(light, part));
+  glUseProgram(program.id());
+  gpu::set_uniform(program, "dz", s.dz);
+  if (part == Part::cut_slabs) {
+    gpu::set_uniform(program, "plane_count", s.count);
+    glBindVertexArray(no_vertices_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return;
+  }
+  gpu::set_uniform(program, "clip_planes", clip);
+  gpu::set_uniform(program, "clip_count", static_cast<int>(clip.size()));
+  gpu::set_uniform(program, "clip_margin", reach(s));
+  if (part != Part::lattice) {
+    glBindVertexArray(region_mesh_.id());
+    glDrawArrays(GL_TRIANGLES, 0, region_count_);
+    return;
+  }
+  gpu::set_uniform(program, "lattice", std::max(settings_.lattice, 1));
+  glBindVertexArray(mesh_.id());
+  glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, s.count);
+}
+
+std::vector<std::pair<std::string, double>> PlanePass::stats() const {
+  std::vector<std::pair<std::string, double>> s{{"planes", planes_drawn_},
+                                                {"fragments", fragments_},
+                                                {"rebuilt_lights", regions_.rebuilt()},
+                                                {"rebuild_s", regions_.seconds()}};
+  if (settings_.regions == PlaneRegions::none) return s;
+  const auto more = slab_regions_.stats();
+  s.insert(s.end(), more.begin(), more.end());
+  return s;
+}
+
+}  // namespace airlight::kit

@@ -1,0 +1,95 @@
+#pragma once
+// The planes pass (Dobashi 2000 §5): per light, n virtual planes parallel to
+// the image plane from the eye to the far end of the light's lit region,
+// drawn as instances of one lattice mesh with the depth test against the
+// G-buffer, clipped to the light's influence volume, blended additively into
+// the RGBA32F airlight target. Shared by planes and by Nilsson's hybrids
+// (§5.3–5.4), which draw each plane as its fully lit and uncertain parts
+// (slab_regions.hpp) instead of the lattice.
+#include "methods/kit/planes/light_bounds.hpp"
+#include "methods/kit/sampling/noise.hpp"
+#include "methods/kit/frame/scene_frame.hpp"
+#include "methods/kit/planes/slab_regions.hpp"
+
+#include <airlight/scene.hpp>
+#include <airlight/settings.hpp>
+#include <string>
+#include <vector>
+
+namespace airlight::kit {
+
+// How the planes are drawn: whole (Dobashi), or cut by the bounding volumes'
+// regions with the unlit parts left out and the fully lit parts sampled
+// without the shadow test (Nilsson's Method 1, clip) or integrated by Γ
+// (his Method 2, gamma).
+enum class PlaneRegions { none, clip, gamma };
+
+// Every setting of the planes, or (regions) those that keep a plane's sample
+// at the middle of its slab: no lattice, no jitter.
+std::vector<SettingSpec> plane_settings(bool regions = false);
+
+// The hybrids' slab regions (SlabRegions, one light at a time): the planes'
+// polygons cut by the casters' bounding volumes, on the CPU and the GPU.
+std::vector<MemoryNeed> slab_region_needs(const Scene& scene, const Settings& settings, int width, int height);
+
+struct PlaneSettings {
+  int planes = 100;              // n per light
+  double spacing = 0.0;          // dz in metres of view depth; 0: from n
+  int lattice = 0;               // cells per side of the lattice mesh; 0: ξ per fragment
+  Jitter jitter = Jitter::none;
+  bool lit_sampling = true;      // sample each slab's lit piece, else the slab (Dobashi)
+  bool clip = true;              // clip planes to the influence volume
+  PlaneRegions regions = PlaneRegions::none;
+
+  static PlaneSettings from(const Settings& settings, PlaneRegions regions = PlaneRegions::none);
+};
+
+class PlanePass {
+public:
+  explicit PlanePass(PlaneSettings settings) : settings_(std::move(settings)) {}
+
+  // Program, noise tile, lattice mesh, and each light's volume (rays cast
+  // through the scene on the CPU); needs a current context.
+  void prepare(const Scene& scene);
+
+  // L_air into `target`; the frame must be bound (SceneFrame::bind).
+  void run(const SceneFrame& frame, const gpu::Texture& target);
+
+  // Of the last run: planes, fragment shader invocations (the planes' fragments
+  // that passed the depth test and were shaded; -1 without
+  // ARB_pipeline_statistics_query), the lights whose lit region was traced
+  // again and its seconds, and with regions their polygons and trees.
+  std::vector<std::pair<std::string, double>> stats() const;
+
+private:
+  struct Slabs {
+    int count = 0;
+    float dz = 0.0f;
+  };
+  Slabs slabs(const LightBounds& volume) const;
+  float reach(const Slabs& s) const;
+  enum class Part { lattice, fully_lit, uncertain, cut_slabs };
+  std::string defines(int light, Part part) const;
+  void draw_light(const SceneFrame& frame, int light, const LightBounds& volume);
+  void draw_regions(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip);
+  void draw(const SceneFrame& frame, int light, Part part, const Slabs& s, const std::vector<glm::vec4>& clip);
+  void upload(const std::vector<RegionVertex>& vertices);
+
+  PlaneSettings settings_;
+  geometry::CameraBasis camera_;
+  double far_ = 0.0;
+  float cos_edge_ = 1.0f;  // the smallest cos(ray, forward) in the image
+  LitRegions regions_;
+  SlabRegions slab_regions_;
+  gpu::Texture noise_;
+  gpu::VertexArray mesh_, region_mesh_, no_vertices_;
+  gpu::Buffer indices_, region_vertices_;
+  size_t region_capacity_ = 0;
+  int region_count_ = 0;
+  gpu::Framebuffer fbo_;
+  gpu::Query invocations_;
+  int index_count_ = 0;
+  double planes_drawn_ = 0.0, fragments_ = -1.0;
+};
+
+}  // namespace airlight::kit
