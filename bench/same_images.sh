@@ -58,21 +58,14 @@ for scene in "${scenes[@]}"; do
   done
 done | xargs -P "${SAME_IMAGES_JOBS:-2}" -n 5 bash -c 'render "$@"' _
 
-python3 - "$work" "$((SECONDS - start))" "${#scenes[@]}" "${scenes[@]}" "${methods[@]}" <<'PY' || exit 1
-import math, os, struct, sys
+PYTHONPATH=bench python3 - "$work" "$((SECONDS - start))" "${#scenes[@]}" "${scenes[@]}" "${methods[@]}" <<'PY' || exit 1
+import math, os, sys
+
+from pfm_error import read_pfm
 
 work, seconds, count = sys.argv[1], sys.argv[2], int(sys.argv[3])
 scenes, methods = sys.argv[4:4 + count], sys.argv[4 + count:]
 tolerance = 1e-6
-
-
-def read_pfm(path):
-    with open(path, 'rb') as f:
-        data = f.read()
-    lines = data.split(b'\n', 3)
-    width, height = map(int, lines[1].split())
-    endian = '<' if float(lines[2]) < 0 else '>'
-    return lines[0] + b' ' + lines[1], struct.unpack(f'{endian}{width * height * 3}f', lines[3]), width
 
 
 def compare(base, method):
@@ -86,9 +79,9 @@ def compare(base, method):
             return 'identical', 'identical'
     if method == 'reference':
         return 'differs', 'not bit-identical'
-    (head_a, a, width), (head_b, b, _) = read_pfm(f'{base}.old.pfm'), read_pfm(f'{base}.new.pfm')
-    if head_a != head_b:
-        return 'differs', f'other size: {head_a} against {head_b}'
+    (width, height, a), (*size_b, b) = read_pfm(f'{base}.old.pfm'), read_pfm(f'{base}.new.pfm')
+    if [width, height] != size_b:
+        return 'differs', f'{width}x{height} against {size_b[0]}x{size_b[1]}'
     floor = sum(map(abs, a)) / len(a)
     worst, where = 0.0, 0
     for i, (x, y) in enumerate(zip(a, b)):
@@ -99,7 +92,7 @@ def compare(base, method):
             error = abs(x - y) / scale if scale > 0 else (0.0 if x == y else math.inf)
         if error > worst:
             worst, where = error, i
-    pixel = f'pixel ({where // 3 % width}, {where // 3 // width})'
+    pixel = f'pixel ({where // 3 % width}, {height - 1 - where // 3 // width})'  # PFM rows run bottom up
     if worst <= tolerance:
         return 'within', f'within {tolerance:g} (at most {worst:.2g}, {pixel})'
     return 'differs', f'{worst:.3g} relative at {pixel}'
