@@ -14,13 +14,11 @@
 # Writes bench/results/beam_tree_build.csv. References come from the default
 # cache (README "Benchmarking").
 # usage: bench/beam_tree_build.sh   (builds first)
-set -euo pipefail
-cd "$(dirname "$0")/.."
-scripts/build release >/dev/null
-mkdir -p bench/results
-build/release/src/app/airlight bench --warmup 1 --frames 3 \
+source "$(dirname "$0")/prologue.sh"
+build_airlight
+$airlight bench --warmup 1 --frames 3 \
   --scene bench/scenes/biri_sphere_100.json --scene bench/scenes/biri_sphere_1k.json \
   --scene bench/scenes/biri_sphere_10k.json --scene bench/scenes/biri_sphere_100k.json \
   --sizes 256x256,512x512 --methods beam_volumes,shadow_planes,planes,raymarch \
-  --csv bench/results/beam_tree_build.csv
-python3 bench/beam_tree_build.py bench/results/beam_tree_build.csv
+  --csv "$results/beam_tree_build.csv"
+python3 bench/beam_tree_build.py "$results/beam_tree_build.csv"

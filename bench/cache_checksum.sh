@@ -4,11 +4,10 @@
 # cache, then times, best of 20, reading its entry (at once by its size, as
 # reference/cache.cpp does, and through a stringstream) and its 64-bit FNV-1a,
 # byte by byte as cache.cpp computes it, compiled at -O3.
-set -euo pipefail
-cd "$(dirname "$0")/.."
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-build/release/src/app/airlight compare --builtin biri_media --methods raymarch --size 256x192 \
+# usage: bench/cache_checksum.sh   (builds first)
+source "$(dirname "$0")/prologue.sh"
+build_airlight
+$airlight compare --builtin biri_media --methods raymarch --size 256x192 \
   --cache "$work/cache" --out "$work/sheet.png" 2>/dev/null
 cat >"$work/time.cpp" <<'CPP'
 #include <algorithm>

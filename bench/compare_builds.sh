@@ -5,18 +5,15 @@
 # method's own passes (all but the shared frame's) for both, their ratio and
 # both errors. Build the old one from a worktree: git worktree add /tmp/old REV,
 # then cmake --preset release && cmake --build build/release --target airlight there.
-set -euo pipefail
-old=$1 new=$2
+source "$(dirname "$0")/prologue.sh"
+old=$(given_binary "$1") new=$(given_binary "$2")
 shift 2
-dir=$(mktemp -d)
-"$old" bench "$@" --sizes 512x384 --warmup 1 --frames 5 --csv "$dir/old.csv" >/dev/null 2>&1
-"$new" bench "$@" --sizes 512x384 --warmup 1 --frames 5 --csv "$dir/new.csv" >/dev/null 2>&1
-python3 - "$dir/old.csv" "$dir/new.csv" <<'PY'
+for build in old new; do  # from the caller's directory, where BENCH-ARGS' paths are relative to
+  (cd "$caller_dir" && "${!build}" bench "$@" --sizes 512x384 --warmup 1 --frames 5 --csv "$work/$build.csv" >/dev/null 2>&1)
+done
+PYTHONPATH=bench python3 - "$work/old.csv" "$work/new.csv" <<'PY'
 import csv, sys
-frame = {'gbuffer', 'shadow', 'surface', 'depth', 'engine', 'readback'}
-def own(row):
-    return sum(float(v) for k, v in row.items()
-               if k.endswith('_median_s') and k != 'frame_median_s' and k[:-9] not in frame and v)
+from bench_csv import own
 old, new = (list(csv.DictReader(open(f))) for f in sys.argv[1:3])
 for a, b in zip(old, new):
     keys = ' '.join(x for x in a['settings'].split() if x.startswith(('steps', 'sampling', 'F=', 'planes=')))

@@ -12,14 +12,12 @@
 # Writes bench/results/light_volume_build.csv. References come from the
 # default cache (README "Benchmarking").
 # usage: bench/light_volume_build.sh   (builds first)
-set -euo pipefail
-cd "$(dirname "$0")/.."
-scripts/build release >/dev/null
-mkdir -p bench/results
-build/release/src/app/airlight bench --warmup 1 --frames 3 \
+source "$(dirname "$0")/prologue.sh"
+build_airlight
+$airlight bench --warmup 1 --frames 3 \
   --builtin teapot_spot --builtin toth_hall --builtin three_lights --sizes 128x96 \
   --methods light_volume,sv_march \
   --sweep light_volume.volume_resolution=32,64,128,256,512,1024 \
   --sweep sv_march.volume_resolution=32,64,128,256,512,1024 \
-  --csv bench/results/light_volume_build.csv
-python3 bench/light_volume_build.py bench/results/light_volume_build.csv
+  --csv "$results/light_volume_build.csv"
+python3 bench/light_volume_build.py "$results/light_volume_build.csv"

@@ -12,12 +12,10 @@
 # come from the default cache (README "Benchmarking"); the first run renders
 # them (toth_hall at 1024×768 takes the CPU reference a few minutes).
 # usage: bench/light_volumes.sh [E]   (builds first)
-set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/prologue.sh"
 quality=${1:-0.01}
-scripts/build release >/dev/null
-mkdir -p bench/results
-build/release/src/app/airlight bench --warmup 1 --frames 2 --equal-quality "$quality" \
+build_airlight
+$airlight bench --warmup 1 --frames 2 --equal-quality "$quality" \
   --builtin teapot_spot --builtin three_lights --builtin toth_hall --sizes 256x192,512x384,1024x768 \
   --methods raymarch,interleaved,planes,hybrid_clip,hybrid,analytic,shadow_planes,beam_volumes,light_volume,sv_march \
   --sweep raymarch.sampling=uniform,equiangular --sweep raymarch.steps=16,32,64,128,256 \
@@ -25,5 +23,5 @@ build/release/src/app/airlight bench --warmup 1 --frames 2 --equal-quality "$qua
   --sweep planes.planes=30,75,150,300 --sweep hybrid_clip.planes=30,75,150,300 --sweep hybrid.planes=30,75,150,300 \
   --sweep light_volume.volume_resolution=256,1024 \
   --sweep sv_march.sampling=uniform,equiangular --sweep sv_march.steps=4,8,16,32,64,128,256 \
-  --csv bench/results/light_volumes.csv
-python3 bench/light_volumes.py bench/results/light_volumes.csv 0.01 0.03
+  --csv "$results/light_volumes.csv"
+python3 bench/light_volumes.py "$results/light_volumes.csv" 0.01 0.03

@@ -9,15 +9,13 @@
 # fragments it shades (bench/nilsson_table.py prints the table).
 # Writes bench/results/nilsson.csv. References come from the default cache.
 # usage: bench/nilsson_table.sh   (builds first)
-set -euo pipefail
-cd "$(dirname "$0")/.."
-scripts/build release >/dev/null
-mkdir -p bench/results
-build/release/src/app/airlight bench --warmup 1 --frames 3 \
+source "$(dirname "$0")/prologue.sh"
+build_airlight
+$airlight bench --warmup 1 --frames 3 \
   --builtin nilsson_parallel --builtin nilsson_toplight --builtin nilsson_multiple --scene bench/scenes/under_table.json \
   --sizes 64x64,128x128,256x256,512x512,1024x1024 \
   --methods planes,hybrid_clip,hybrid,beam_volumes,shadow_planes \
   --set planes.sampling=plane --set hybrid_clip.sampling=plane --set hybrid.sampling=plane \
   --sweep planes.spacing=0.5,0.1 --sweep hybrid_clip.spacing=0.5,0.1 --sweep hybrid.spacing=0.5,0.1 \
-  --csv bench/results/nilsson.csv
-python3 bench/nilsson_table.py bench/results/nilsson.csv
+  --csv "$results/nilsson.csv"
+python3 bench/nilsson_table.py "$results/nilsson.csv"

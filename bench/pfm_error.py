@@ -10,6 +10,7 @@ import sys
 
 
 def read_pfm(path):
+    """Width, height and the RGB values, row by row as the file stores them."""
     with open(path, "rb") as f:
         header = f.readline().split()
         dims = f.readline().split()
@@ -17,14 +18,14 @@ def read_pfm(path):
         width, height = int(dims[0]), int(dims[1])
         assert header[0] == b"PF", f"{path}: not an RGB PFM"
         endian = "<" if scale < 0 else ">"
-        return struct.unpack(f"{endian}{width * height * 3}f", f.read(width * height * 12))
+        return width, height, struct.unpack(f"{endian}{width * height * 3}f", f.read(width * height * 12))
 
 
 def main():
-    reference = read_pfm(sys.argv[1])
+    reference = read_pfm(sys.argv[1])[2]
     mean = sum(reference) / len(reference)
     for path in sys.argv[2:]:
-        image = read_pfm(path)
+        image = read_pfm(path)[2]
         squared = sum((m - r) ** 2 for m, r in zip(image, reference))
         worst = max(abs(m - r) for m, r in zip(image, reference))
         print(f"{path}\trel_rmse={math.sqrt(squared / len(reference)) / mean:.4f}\tmax_abs={worst:.4f}")

@@ -9,14 +9,12 @@
 # Writes bench/results/shadow_planes.csv (and -equal-quality.csv). References
 # come from the default cache (README "Benchmarking").
 # usage: bench/shadow_planes.sh [E]   (builds first)
-set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/prologue.sh"
 quality=${1:-0.01}
-scripts/build release >/dev/null
-mkdir -p bench/results
-build/release/src/app/airlight bench --warmup 1 --frames 3 --equal-quality "$quality" \
+build_airlight
+$airlight bench --warmup 1 --frames 3 --equal-quality "$quality" \
   --builtin biri_sphere --scene bench/scenes/biri_sphere_1k.json --scene bench/scenes/biri_sphere_10k.json \
   --scene bench/scenes/biri_sphere_100k.json --sizes 256x192,512x384,1024x768 \
   --methods shadow_planes,planes,raymarch \
   --sweep planes.planes=15,30,75,150 --sweep raymarch.sampling=uniform,equiangular \
-  --sweep raymarch.steps=16,64,256 --csv bench/results/shadow_planes.csv
+  --sweep raymarch.steps=16,64,256 --csv "$results/shadow_planes.csv"

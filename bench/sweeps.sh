@@ -10,13 +10,9 @@
 # kernel, CPU). References come from the default cache (README "Benchmarking").
 # Most of its time goes to raymarch N = 128 at 512×384 (run time: docs/decisions.md).
 # usage: bench/sweeps.sh [E]   (E: the equal-quality rRMSE, default 0.05; builds first)
-set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/prologue.sh"
 quality=${1:-0.05}
-scripts/build release >/dev/null
-airlight=build/release/src/app/airlight
-results=bench/results
-mkdir -p "$results"
+build_airlight
 
 {
   date -u +"%Y-%m-%d %H:%M UTC"

@@ -168,4 +168,59 @@ Mesh make_arch(const glm::vec3& center, float inner_radius, float outer_radius, 
   return b.take("arch");
 }
 
+namespace {
+
+Mesh named(Mesh mesh, const char* name) {
+  mesh.name = name;
+  return mesh;
+}
+
+}  // namespace
+
+std::vector<Mesh> make_room(const Extent& inside, const std::optional<Extent>& window, float wall) {
+  const glm::vec3 lo = inside.min, hi = inside.max, w(wall);
+  std::vector<Mesh> pieces;
+  auto slab = [&](const glm::vec3& min, const glm::vec3& max, const char* name) {
+    pieces.push_back(named(make_box(min, max), name));
+  };
+  slab(lo - w, {hi.x + wall, lo.y, hi.z + wall}, "floor");
+  slab({lo.x - wall, hi.y, lo.z - wall}, hi + w, "ceiling");
+  slab({lo.x - wall, lo.y, lo.z}, {lo.x, hi.y, hi.z}, "left wall");
+  slab({hi.x, lo.y, lo.z}, {hi.x + wall, hi.y, hi.z}, "right wall");
+  slab({lo.x - wall, lo.y, hi.z}, {hi.x + wall, hi.y, hi.z + wall}, "front wall");
+  const float back = lo.z - wall;
+  if (!window) {
+    slab({lo.x - wall, lo.y, back}, {hi.x + wall, hi.y, lo.z}, "back wall");
+    return pieces;
+  }
+  const glm::vec2 wx(window->min.x, window->max.x), wy(window->min.y, window->max.y);
+  slab({lo.x - wall, lo.y, back}, {hi.x + wall, wy[0], lo.z}, "wall below window");
+  slab({lo.x - wall, wy[1], back}, {hi.x + wall, hi.y, lo.z}, "wall above window");
+  slab({lo.x - wall, wy[0], back}, {wx[0], wy[1], lo.z}, "wall left of window");
+  slab({wx[1], wy[0], back}, {hi.x + wall, wy[1], lo.z}, "wall right of window");
+  return pieces;
+}
+
+std::vector<Mesh> make_table(const glm::vec3& centre_of_top, glm::vec2 size) {
+  const glm::vec3 c = centre_of_top, half(0.5f * size.x, 0.0f, 0.5f * size.y), thick(0.0f, 0.05f, 0.0f);
+  std::vector<Mesh> pieces{named(make_box(c - half - thick, c + half), "table top")};
+  const float leg = 0.06f, inset = 0.08f;  // half-width of a leg, its inset from the top's edge
+  for (const float sx : {-1.0f, 1.0f})
+    for (const float sz : {-1.0f, 1.0f}) {
+      const glm::vec3 foot(c.x + sx * (half.x - inset), 0.0f, c.z + sz * (half.z - inset));
+      const glm::vec3 top = foot + glm::vec3(0.0f, c.y - thick.y, 0.0f);
+      pieces.push_back(named(make_box(foot - glm::vec3(leg, 0.0f, leg), top + glm::vec3(leg, 0.0f, leg)), "table leg"));
+    }
+  return pieces;
+}
+
+std::vector<Mesh> make_column(glm::vec2 at, float height, int segments) {
+  const glm::vec3 foot(at.x, 0.0f, at.y);
+  const float plinth = 0.3f, half = 0.45f, radius = 0.35f;  // the blocks' height and half-width
+  const glm::vec3 top = foot + glm::vec3(0.0f, height, 0.0f);
+  return {named(make_box(foot - glm::vec3(half, 0.0f, half), foot + glm::vec3(half, plinth, half)), "plinth"),
+          named(make_cylinder(foot + glm::vec3(0.0f, plinth, 0.0f), radius, height - 2.0f * plinth, segments), "column"),
+          named(make_box(top - glm::vec3(half, plinth, half), top + glm::vec3(half, 0.0f, half)), "capital")};
+}
+
 }  // namespace airlight::scene_mesh

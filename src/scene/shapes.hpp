@@ -8,6 +8,8 @@
 #include <airlight/scene.hpp>
 #include <filesystem>
 #include <glm/vec2.hpp>
+#include <optional>
+#include <vector>
 
 namespace airlight::scene_mesh {
 
@@ -34,6 +36,26 @@ Mesh make_arch(const glm::vec3& center, float inner_radius, float outer_radius, 
 // The Utah teapot (Newell's 32 bicubic patches), `segments`×`segments` quads
 // per patch, y up, spout toward +x, standing on y = 0 and 1 unit tall.
 Mesh make_teapot(int segments);
+
+// An axis-aligned region of space: a room's inside, a window opening.
+struct Extent {
+  glm::vec3 min, max;
+};
+
+// The shapes of several pieces below (the built-in scenes' furniture) give each
+// piece the name of its part: "left wall", "table leg".
+
+// A closed room around `inside`, of slabs `wall` thick, with `window` (an
+// opening through the wall at z = inside.min.z), if any, left open: that wall
+// is then built from the four boxes around the opening.
+std::vector<Mesh> make_room(const Extent& inside, const std::optional<Extent>& window, float wall);
+
+// A table standing on y = 0: a top 5 cm thick on four legs.
+std::vector<Mesh> make_table(const glm::vec3& centre_of_top, glm::vec2 size);
+
+// A column standing on y = 0 at (x, z) = `at`, `height` tall: a square plinth,
+// a round shaft of `segments`, a square capital.
+std::vector<Mesh> make_column(glm::vec2 at, float height, int segments);
 
 // A Wavefront OBJ file; polygons are fanned into triangles. Throws InputError
 // naming the OBJ file, with keys "face N" / "vertex N" (1-based, file order). Its

@@ -162,5 +162,48 @@ TEST(Shapes, BuilderRefusesDegenerateTriangles) {
   EXPECT_TRUE(b.mesh().triangles.empty());
 }
 
+// The slabs of a room fill the shell between the inside and the inside grown by
+// the wall's thickness, all but the window's opening through the back wall:
+// their volumes add up to the shell's, so none overlaps another or leaves a gap.
+TEST(Shapes, RoomSlabsFillItsShellButTheWindow) {
+  const Extent inside{{-4, 0, -3}, {4, 3.5f, 3}}, window{{-0.8f, 1, -3.25f}, {0.8f, 3, -3}};
+  const float wall = 0.25f;
+  const auto volume = [](const glm::vec3& min, const glm::vec3& max) {
+    const glm::vec3 d = max - min;
+    return double(d.x) * d.y * d.z;
+  };
+  const double shell = volume(inside.min - wall, inside.max + wall) - volume(inside.min, inside.max);
+  for (const bool with_window : {false, true}) {
+    const std::vector<Mesh> room = make_room(inside, with_window ? std::optional(window) : std::nullopt, wall);
+    EXPECT_EQ(room.size(), with_window ? 9u : 6u);
+    double sum = 0.0;
+    for (const Mesh& piece : room) {
+      EXPECT_TRUE(well_formed(piece) && closed_after_welding(piece)) << piece.name;
+      sum += signed_volume(piece);
+    }
+    EXPECT_NEAR(sum, shell - (with_window ? volume(window.min, window.max) : 0.0), 1e-3);
+  }
+  EXPECT_EQ(make_room(inside, window, wall).back().name, "wall right of window");
+}
+
+// A column stands on the floor and reaches `height`; a table's top is at its
+// given centre and its legs stand on the floor.
+TEST(Shapes, ColumnAndTableStandOnTheFloor) {
+  const auto bounds = [](const std::vector<Mesh>& pieces) {
+    glm::vec2 y(1e9f, -1e9f);
+    for (const Mesh& m : pieces)
+      for (const glm::vec3& p : m.positions) y = {std::min(y[0], p.y), std::max(y[1], p.y)};
+    return y;
+  };
+  const std::vector<Mesh> column = make_column({1, 2}, 4.6f, 16);
+  ASSERT_EQ(column.size(), 3u);
+  EXPECT_EQ(column[1].name, "column");
+  EXPECT_EQ(bounds(column), glm::vec2(0.0f, 4.6f));
+  const std::vector<Mesh> table = make_table({0.1f, 0.75f, -1.3f}, {1.2f, 0.7f});
+  ASSERT_EQ(table.size(), 5u);  // the top and four legs
+  EXPECT_EQ(bounds(table), glm::vec2(0.0f, 0.75f));
+  EXPECT_EQ(table.front().name, "table top");
+}
+
 }  // namespace
 }  // namespace airlight
