@@ -87,7 +87,7 @@ public:
   // engine's depth buffer and shadow maps into its textures. Others throw Failure.
   virtual void render_frame(const FrameInputs& inputs, const EngineFrame& engine);
   // The last frame: its images (read from the GPU), pass times and counters.
-  virtual FrameImages read_back() = 0;
+  virtual FrameImages read_back() const = 0;
   // The last frame's times and counters alone; empty for a method that has
   // none without read_back (the CPU reference).
   virtual FrameNumbers numbers() const { return {}; }

@@ -157,7 +157,7 @@ void GpuMethod::write_engine_target(const EngineTarget& target, PassTimer& timer
 
 FrameNumbers GpuMethod::numbers() const { return {times_, stats()}; }
 
-FrameImages GpuMethod::read_back() {
+FrameImages GpuMethod::read_back() const {
   if (!rendered_) throw Failure("read_back() before render_frame()");
   gpu::SavedState state;
   const auto start = std::chrono::steady_clock::now();

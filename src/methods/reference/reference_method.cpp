@@ -23,7 +23,7 @@ public:
     rendered_ = true;
   }
 
-  FrameImages read_back() override {
+  FrameImages read_back() const override {
     if (!rendered_) throw Failure("read_back() before render_frame()");
     return images_;
   }
