@@ -124,6 +124,9 @@ struct Capabilities {
   bool gobos = true;               // false: as if no light carried a gobo
   bool engine_maps = true;         // renders from an engine's depth and shadow maps (<airlight/engine.hpp>)
   bool caster_triangles = false;   // reads the casters' triangles, not the shadow maps alone: costs grow with them
+  // The CPU reference: the ground truth every other method is judged against,
+  // seconds a frame and the same image each time.
+  bool ground_truth = false;
 };
 
 // The scene whose reference a method's image is judged against: the scene

@@ -103,7 +103,7 @@ std::vector<std::string> viewer_methods() {
   std::vector<std::string> names;
   // The CPU reference renders seconds per frame: the issue keeps it to the background.
   for (const MethodInfo& m : registered_methods())
-    if (m.name != "reference") names.push_back(m.name);
+    if (!m.capabilities.ground_truth) names.push_back(m.name);
   return names;
 }
 
