@@ -1,12 +1,10 @@
 #pragma once
-// Errors that reach the user. Bad input names the file and the key and exits 2;
-// any other failure exits 1 (docs/design.md §5).
+// Errors that reach the user: bad input, naming the file and the key, and any
+// other failure (the command exits 2 and 1 for them: docs/design.md §5).
 #include <stdexcept>
 #include <string>
 
 namespace airlight {
-
-enum ExitStatus : int { exit_ok = 0, exit_failure = 1, exit_bad_input = 2 };
 
 // Bad input: a scene file, a mesh, an image, a command-line value.
 // what() reads "<file>: <key>: <message>" (the key may be empty).

@@ -195,8 +195,9 @@ struct MethodInfo {
 
 // Every registered method, in the order of docs/design.md §3.
 const std::vector<MethodInfo>& registered_methods();
-// Throws InputError(option, name) for an unknown method, listing the known ones.
-const MethodInfo& find_method(const std::string& name, const std::string& option = "--method");
+// Throws InputError(source, name) for an unknown method, listing the known
+// ones; `source` names where the name came from (a command: its option).
+const MethodInfo& find_method(const std::string& name, const std::string& source = "find_method");
 
 // L = L_surf·T + L_air, or one of its terms.
 Image select_pass(const FrameImages& frame, Pass pass);

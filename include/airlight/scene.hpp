@@ -134,7 +134,5 @@ Scene builtin_scene(const std::string& name);
 std::vector<std::string> builtin_scene_names();
 // One line on what a built-in scene shows and which document it comes from.
 std::string builtin_scene_description(const std::string& name);
-// The scene `scripts/demo` renders.
-inline constexpr const char* default_builtin = "teapot_spot";
 
 }  // namespace airlight

@@ -27,7 +27,8 @@ public:
   Settings() = default;
   explicit Settings(std::vector<SettingSpec> specs);
 
-  // "key=value"; `source` names where it came from in messages (e.g. "--set").
+  // "key=value"; `source` names where the caller got it, for messages (the
+  // command: its option; an engine: its own config file or key).
   // Throws InputError(source, key) for an unknown key or a bad value.
   void set(const std::string& assignment, const std::string& source);
   void set(const std::string& key, const std::string& value, const std::string& source);
