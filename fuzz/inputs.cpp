@@ -109,7 +109,7 @@ std::string method_options(const std::string& bytes) {
     if (option == "--set") sets.push_back(value);
     if (option == "--sweep") sweeps.push_back(value);
   }
-  return "render: " + outcome([&] { app::method_settings(find_method(method), sets); }) +
+  return "render: " + outcome([&] { app::method_settings(find_method(method, "--method"), sets); }) +
          "\ncompare: " + outcome([&] { app::parse_entries(methods, sets); }) +
          "\nbench: " + outcome([&] { app::plan_variants(listed, sweeps, sets); }) + "\n";
 }

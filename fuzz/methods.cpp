@@ -22,6 +22,7 @@ MethodInfo method(const std::string& name, std::vector<SettingSpec> own) {
 MethodInfo reference_info() {
   MethodInfo info;
   info.name = "reference";
+  info.capabilities.ground_truth = true;
   info.settings = {{"rel_tol", T::real, 1e-3, 1e-7, 0.1, {}, ""}, {"min_segments", T::integer, 128, 1, 4096, {}, ""}};
   return info;
 }

@@ -46,6 +46,7 @@ TEST(FuzzRegressions, EachCaseHasItsOutcome) {
 TEST(FuzzMethods, AreTheRegisteredOnes) {
   for (const MethodInfo& fuzzed : {reference_info(), raymarch_info(), planes_info()}) {
     const MethodInfo& registered = find_method(fuzzed.name);
+    EXPECT_EQ(fuzzed.capabilities.ground_truth, registered.capabilities.ground_truth) << fuzzed.name;
     ASSERT_EQ(fuzzed.settings.size(), registered.settings.size()) << fuzzed.name;
     for (size_t i = 0; i < fuzzed.settings.size(); ++i) {
       const SettingSpec &a = fuzzed.settings[i], &b = registered.settings[i];

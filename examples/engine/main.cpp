@@ -202,7 +202,7 @@ void write_pfm(GLuint texture, int width, int height, const std::string& file) {
 }
 
 struct Options {
-  std::string scene_file, builtin = airlight::default_builtin, method = "raymarch";
+  std::string scene_file, builtin = "teapot_spot", method = "raymarch";
   std::vector<std::string> settings{"steps=256", "sampling=equiangular"};
   int width = 640, height = 480;
   std::string out_airlight = "airlight.pfm", out_composite = "composite.pfm";
@@ -312,7 +312,7 @@ void run(const Options& o) {
   // 3. airlight's shafts from the engine's depth and shadow maps: L_air and
   //    T(d) into the engine's textures, and colour becomes L_surf·T + L_air.
   airlight::use_current_gl_context();
-  const airlight::MethodInfo& info = airlight::find_method(o.method);
+  const airlight::MethodInfo& info = airlight::find_method(o.method, "--method");
   airlight::Settings settings(info.settings);
   for (const std::string& assignment : o.settings) settings.set(assignment, "--set");
   const std::unique_ptr<airlight::Method> method = info.create(settings);

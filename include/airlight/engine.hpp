@@ -30,6 +30,7 @@
 // shadow maps: through airlight's own nearest sampler, so compare mode and
 // filters set for hardware PCF do not matter) or written (targets); their
 // parameters are not changed. Multisampled textures are not accepted.
+#include <airlight/export.hpp>
 #include <array>
 #include <glm/mat4x4.hpp>
 #include <optional>
@@ -46,14 +47,14 @@ enum class DepthRange { negative_one_to_one, zero_to_one };
 // projection works — reversed-Z, infinite far plane — as long as it can be
 // inverted; where the depth is the clear value (no surface) or beyond the
 // camera's far plane, the view ray ends at the far plane.
-struct EngineDepth {
+struct AIRLIGHT_API EngineDepth {
   unsigned texture = 0;
   glm::mat4 view{1.0f}, projection{1.0f};
   DepthRange range = DepthRange::negative_one_to_one;
 };
 
 // A light's shadow map as the engine drew it.
-struct EngineShadow {
+struct AIRLIGHT_API EngineShadow {
   enum class Kind {
     map,   // a 2D texture, or layer `layer` of a 2D array, through view and projection
     cube,  // a cube map around the light's position, GL's face order and orientation
@@ -73,7 +74,7 @@ struct EngineShadow {
 // Where the result goes; each texture the frame's size (another size or format
 // throws InputError("EngineTarget", "airlight" | "transmittance" | "colour")
 // before anything is drawn). 0 leaves that output out.
-struct EngineTarget {
+struct AIRLIGHT_API EngineTarget {
   unsigned airlight = 0;       // RGBA32F or RGBA16F: L_air, W/(m²·sr)
   unsigned transmittance = 0;  // RGBA32F or RGBA16F: T(d) per channel, what compositing needs
   unsigned colour = 0;         // any colour-renderable texture holding linear L_surf in W/(m²·sr)
@@ -83,7 +84,7 @@ struct EngineTarget {
                                // its own (the viewer); needs FrameInputs::surface and no engine depth
 };
 
-struct EngineFrame {
+struct AIRLIGHT_API EngineFrame {
   // The engine's depth buffer; none: airlight draws its own G-buffer.
   std::optional<EngineDepth> depth;
   // Per light of FrameInputs::lights (shorter: the rest have none); none:
@@ -95,6 +96,6 @@ struct EngineFrame {
 // From now on GPU methods render in the GL 4.5 context current on this thread
 // (the engine's) instead of creating a headless one. Throws Failure when no
 // context is current or it is older than OpenGL 4.5.
-void use_current_gl_context();
+AIRLIGHT_API void use_current_gl_context();
 
 }  // namespace airlight

@@ -1,16 +1,15 @@
 #pragma once
-// Errors that reach the user. Bad input names the file and the key and exits 2;
-// any other failure exits 1 (docs/design.md §5).
+// Errors that reach the user: bad input, naming the file and the key, and any
+// other failure (the command exits 2 and 1 for them: docs/design.md §5).
+#include <airlight/export.hpp>
 #include <stdexcept>
 #include <string>
 
 namespace airlight {
 
-enum ExitStatus : int { exit_ok = 0, exit_failure = 1, exit_bad_input = 2 };
-
 // Bad input: a scene file, a mesh, an image, a command-line value.
 // what() reads "<file>: <key>: <message>" (the key may be empty).
-class InputError : public std::runtime_error {
+class AIRLIGHT_API InputError : public std::runtime_error {
 public:
   InputError(std::string file, std::string key, const std::string& message);
   const std::string& file() const { return file_; }
@@ -22,13 +21,13 @@ private:
 };
 
 // Any other failure: no OpenGL context, an I/O error on output, an internal limit.
-class Failure : public std::runtime_error {
+class AIRLIGHT_API Failure : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
 };
 
 // The GPU (or, on llvmpipe, the process) ran out of memory: GL_OUT_OF_MEMORY.
-class OutOfMemory : public Failure {
+class AIRLIGHT_API OutOfMemory : public Failure {
 public:
   using Failure::Failure;
 };

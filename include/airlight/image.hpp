@@ -1,11 +1,12 @@
 #pragma once
 // Linear float RGB images, row 0 at the top.
+#include <airlight/export.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
 
 namespace airlight {
 
-struct Image {
+struct AIRLIGHT_API Image {
   int width = 0, height = 0;
   std::vector<glm::vec3> pixels;  // width * height, row-major, top row first
 

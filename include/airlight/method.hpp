@@ -8,6 +8,7 @@
 // interactive caller never pays. An engine hands in its own depth buffer and
 // shadow maps and receives L_air and T(d) in its own textures
 // (<airlight/engine.hpp>).
+#include <airlight/export.hpp>
 #include <airlight/image.hpp>
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
@@ -27,7 +28,7 @@ struct EngineFrame;  // <airlight/engine.hpp>
 // colour, cone, type or number; a gobo must be one the prepared scene's lights
 // already use. Bounded volumes and meshes' shapes are fixed at prepare; meshes
 // move by their transforms.
-struct FrameInputs {
+struct AIRLIGHT_API FrameInputs {
   Camera camera;
   int width = 0, height = 0;
   std::vector<Light> lights;
@@ -43,7 +44,7 @@ struct FrameInputs {
 };
 
 // The scene as loaded, at width × height: the first frame's inputs.
-FrameInputs frame_inputs(const Scene& scene, int width, int height);
+AIRLIGHT_API FrameInputs frame_inputs(const Scene& scene, int width, int height);
 
 // Throws InputError("frame", key) for inputs that do not fit the prepared
 // scene: a size outside 1–16384, a transform count other than the mesh count,
@@ -51,16 +52,16 @@ FrameInputs frame_inputs(const Scene& scene, int width, int height);
 // negative colour or coefficient, and every other value the scene loader
 // checks (phase lobes, light model, gobo_up, beams). Every render_frame checks
 // this first.
-void check_frame_inputs(const Scene& scene, const FrameInputs& inputs);
+AIRLIGHT_API void check_frame_inputs(const Scene& scene, const FrameInputs& inputs);
 
 // The scene a frame shows: the inputs' camera, lights, medium and light model,
 // and its meshes moved by the transforms (what the reference renders).
-Scene posed_scene(const Scene& scene, const FrameInputs& inputs);
+AIRLIGHT_API Scene posed_scene(const Scene& scene, const FrameInputs& inputs);
 
 enum class Pass { composite, airlight, surface };
 
 // A frame read back to the CPU.
-struct FrameImages {
+struct AIRLIGHT_API FrameImages {
   Image airlight;                      // L_air, W/(m²·sr)
   Image surface;                       // L_surf·T(d)
   std::vector<PassTime> times;         // per pass, in the order run
@@ -70,12 +71,12 @@ struct FrameImages {
 
 // The last frame's pass times and counters without its images: what an
 // interactive caller shows every frame without paying for read_back.
-struct FrameNumbers {
+struct AIRLIGHT_API FrameNumbers {
   std::vector<PassTime> times;
   std::vector<std::pair<std::string, double>> stats;
 };
 
-class Method {
+class AIRLIGHT_API Method {
 public:
   virtual ~Method() = default;
   // Keeps what it needs of `scene`: the caller may drop it once this returns.
@@ -87,7 +88,7 @@ public:
   // engine's depth buffer and shadow maps into its textures. Others throw Failure.
   virtual void render_frame(const FrameInputs& inputs, const EngineFrame& engine);
   // The last frame: its images (read from the GPU), pass times and counters.
-  virtual FrameImages read_back() = 0;
+  virtual FrameImages read_back() const = 0;
   // The last frame's times and counters alone; empty for a method that has
   // none without read_back (the CPU reference).
   virtual FrameNumbers numbers() const { return {}; }
@@ -96,13 +97,13 @@ public:
 // Batch use (render, compare, bench): the scene as loaded at width × height,
 // rendered and read back (with the surface term when `surface`). `method` must
 // have been prepared with `scene`.
-FrameImages render(Method& method, const Scene& scene, int width, int height, bool surface = true);
+AIRLIGHT_API FrameImages render(Method& method, const Scene& scene, int width, int height, bool surface = true);
 
 // Memory a frame needs beyond the per-pixel estimate: how many bytes, what
 // they hold, the setting that sizes them (empty when the scene alone does: its
 // lights, casters or triangles), and the largest single GL buffer and texture
 // among them (an implementation caps each object's size, whatever the memory).
-struct MemoryNeed {
+struct AIRLIGHT_API MemoryNeed {
   std::string setting;
   std::string what;  // "the light volume meshes of 1 cube map (6 faces × 2·2048² triangles), 80 bytes a triangle"
   double bytes = 0.0;
@@ -118,25 +119,28 @@ using MemoryEstimate = std::function<std::vector<MemoryNeed>(const Scene&, const
 // scenes' harness). Every method models every light type, phase sum and light
 // model the format has; they differ in shadows, bounded volumes, gobos and in
 // what they need.
-struct Capabilities {
+struct AIRLIGHT_API Capabilities {
   bool volumetric_shadows = true;  // false: L_air as if no caster stood in the lights' way
   bool bounded_volumes = true;     // false: as if only the medium that fills space were there
   bool gobos = true;               // false: as if no light carried a gobo
   bool engine_maps = true;         // renders from an engine's depth and shadow maps (<airlight/engine.hpp>)
   bool caster_triangles = false;   // reads the casters' triangles, not the shadow maps alone: costs grow with them
+  // The CPU reference: the ground truth every other method is judged against,
+  // seconds a frame and the same image each time.
+  bool ground_truth = false;
 };
 
 // The scene whose reference a method's image is judged against: the scene
 // with what the method does not model taken out (no caster shadows the lights
 // for a method without volumetric shadows, no bounded volume, no gobo), named
 // after it with what was taken out ("biri_sphere_without_shadows").
-Scene judged_scene(const Scene& scene, const Capabilities& capabilities);
+AIRLIGHT_API Scene judged_scene(const Scene& scene, const Capabilities& capabilities);
 
 // How the random scenes' harness (docs/design.md §6) holds a method to the
 // reference beyond what it asks of every method at its defaults (finite,
 // non-negative, rRMSE ≤ 10 %): at these settings, by this measure, within this
 // bound, for this reason.
-struct Trial {
+struct AIRLIGHT_API Trial {
   // rel_rmse: docs/design.md §6's rRMSE. worst_pixel: the largest relative error
   // of a pixel (its largest channel error over its largest reference channel)
   // among the pixels whose reference reaches 1 % of the image's maximum.
@@ -162,14 +166,14 @@ struct Trial {
 // settings: past it a frame would take the method far longer than it is meant
 // to (minutes, or gigabytes), so a caller refuses the scene before any work,
 // naming the setting, which may be raised to render it anyway.
-struct SceneLimit {
+struct AIRLIGHT_API SceneLimit {
   std::string setting;                        // the method's integer setting holding the bound
   std::string counted;                        // what count() counts, plural: "caster triangles"
   std::string why;                            // what grows with it: "its beam trees are built ..."
   std::function<double(const Scene&)> count;  // the scene's count, cheap next to a frame
 };
 
-struct MethodInfo {
+struct AIRLIGHT_API MethodInfo {
   std::string name;
   std::string source;       // the document it comes from
   std::string description;
@@ -191,11 +195,12 @@ struct MethodInfo {
 };
 
 // Every registered method, in the order of docs/design.md §3.
-const std::vector<MethodInfo>& registered_methods();
-// Throws InputError(option, name) for an unknown method, listing the known ones.
-const MethodInfo& find_method(const std::string& name, const std::string& option = "--method");
+AIRLIGHT_API const std::vector<MethodInfo>& registered_methods();
+// Throws InputError(source, name) for an unknown method, listing the known
+// ones; `source` names where the name came from (a command: its option).
+AIRLIGHT_API const MethodInfo& find_method(const std::string& name, const std::string& source = "find_method");
 
 // L = L_surf·T + L_air, or one of its terms.
-Image select_pass(const FrameImages& frame, Pass pass);
+AIRLIGHT_API Image select_pass(const FrameImages& frame, Pass pass);
 
 }  // namespace airlight

@@ -2,6 +2,7 @@
 // The scene model (docs/design.md §1, §4). Every object is a triangle mesh by the time
 // a scene is loaded; phase-function sums are flattened into weighted lobes.
 #include <airlight/box.hpp>
+#include <airlight/export.hpp>
 #include <airlight/image.hpp>
 #include <filesystem>
 #include <glm/vec2.hpp>
@@ -19,7 +20,7 @@ using Color = glm::vec3;
 // frame beyond it is refused (docs/design.md §4).
 inline constexpr double max_far_over_near = 1e5;
 
-struct Camera {
+struct AIRLIGHT_API Camera {
   glm::vec3 position{0, 2, 8}, look_at{0, 1, 0}, up{0, 1, 0};
   float fov_y_deg = 45.0f;  // full vertical field of view
   float near = 0.05f, far = 50.0f;
@@ -28,19 +29,19 @@ struct Camera {
 enum class PhaseType { isotropic, rayleigh, henyey_greenstein, schlick, hazy, murky };
 
 // One normalized phase function; g is used by henyey_greenstein and schlick.
-struct PhaseLobe {
+struct AIRLIGHT_API PhaseLobe {
   PhaseType type = PhaseType::isotropic;
   float g = 0.0f;
   float weight = 1.0f;
 };
 
 // A weighted sum of lobes, weights summing to 1 (a single function is one lobe).
-struct Phase {
+struct AIRLIGHT_API Phase {
   std::vector<PhaseLobe> lobes{PhaseLobe{}};
 };
 
 // The homogeneous medium that fills space.
-struct Medium {
+struct AIRLIGHT_API Medium {
   Color sigma_s{0.0f};  // scattering coefficient, 1/m
   Color sigma_a{0.0f};  // absorption coefficient, 1/m
   Phase phase;
@@ -48,7 +49,7 @@ struct Medium {
 };
 
 // A bounded convex volume whose coefficients add to the medium's inside it.
-struct Volume {
+struct AIRLIGHT_API Volume {
   glm::vec3 min{0.0f}, max{0.0f};  // shape "box": the only shape so far
   Color sigma_s{0.0f}, sigma_a{0.0f};
   Phase phase;
@@ -58,7 +59,7 @@ struct Volume {
 enum class LightModelType { physical, simplified };
 
 // `simplified` is Nilsson 2.5: I / (a1 r^2 + a0), T = 1, isotropic phase.
-struct LightModel {
+struct AIRLIGHT_API LightModel {
   LightModelType type = LightModelType::physical;
   float a0 = 0.0f, a1 = 1.0f;
 };
@@ -71,13 +72,13 @@ enum class LightType { point, spot, directional };
 // optics::gobo_frame) centred at `origin` and perpendicular to the light's
 // direction, and exists for `length` metres downstream of it: the beam is that
 // oriented box. A gobo on a directional light maps across the rectangle.
-struct Beam {
+struct AIRLIGHT_API Beam {
   glm::vec3 origin{0.0f};
   glm::vec2 size{1.0f};  // width, height (m)
   float length = 1.0f;   // m, along direction
 };
 
-struct Light {
+struct AIRLIGHT_API Light {
   LightType type = LightType::point;
   glm::vec3 position{0.0f};           // point, spot
   glm::vec3 direction{0, -1, 0};      // spot: axis; directional: the way light travels (unit)
@@ -90,7 +91,7 @@ struct Light {
   std::optional<Beam> beam;           // directional: the bounded beam; none = lit everywhere
 };
 
-struct Mesh {
+struct AIRLIGHT_API Mesh {
   std::string name;                  // for messages: "objects[2] (hall.obj)"
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;    // per vertex, unit; same size as positions
@@ -103,7 +104,7 @@ struct Mesh {
   std::optional<OrientedBox> outer_box, inner_box;
 };
 
-struct Scene {
+struct AIRLIGHT_API Scene {
   std::string name;                  // built-in name or file stem
   std::filesystem::path source;      // the scene file, empty for built-ins
   Camera camera;
@@ -117,24 +118,22 @@ struct Scene {
 
 // Loads and validates an airlight-scene/1 JSON file. Throws InputError naming
 // the file and the key.
-Scene load_scene(const std::filesystem::path& file);
+AIRLIGHT_API Scene load_scene(const std::filesystem::path& file);
 // Parses scene JSON text; `file` names it in messages and anchors relative paths.
-Scene parse_scene(const std::string& json_text, const std::filesystem::path& file);
+AIRLIGHT_API Scene parse_scene(const std::string& json_text, const std::filesystem::path& file);
 
 // Writes `scene` as an airlight-scene/1 JSON file that load_scene reads back to
 // the same Scene: each mesh as FILE_STEM.meshN.obj (world space, its normals)
 // and each gobo as FILE_STEM.goboN.exr beside it. Bounding volumes that are not
 // axis-aligned are left out (load computes them). Throws InputError for a name
 // not ending in .json, Failure when a file cannot be written.
-void save_scene(const Scene& scene, const std::filesystem::path& file);
+AIRLIGHT_API void save_scene(const Scene& scene, const std::filesystem::path& file);
 
 // Built-in scenes (docs/design.md §4). Throws InputError("--builtin", name) for an
 // unknown name, listing the known ones.
-Scene builtin_scene(const std::string& name);
-std::vector<std::string> builtin_scene_names();
+AIRLIGHT_API Scene builtin_scene(const std::string& name);
+AIRLIGHT_API std::vector<std::string> builtin_scene_names();
 // One line on what a built-in scene shows and which document it comes from.
-std::string builtin_scene_description(const std::string& name);
-// The scene `scripts/demo` renders.
-inline constexpr const char* default_builtin = "teapot_spot";
+AIRLIGHT_API std::string builtin_scene_description(const std::string& name);
 
 }  // namespace airlight

@@ -1,6 +1,7 @@
 #pragma once
 // Typed settings of a method: each declared by name with a type, a default and a
 // range (docs/design.md §3), set from "key=value" text or JSON, reported as JSON.
+#include <airlight/export.hpp>
 #include <map>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -8,7 +9,7 @@
 
 namespace airlight {
 
-struct SettingSpec {
+struct AIRLIGHT_API SettingSpec {
   enum class Type { real, integer, boolean, choice };
   std::string name;
   Type type = Type::real;
@@ -20,14 +21,15 @@ struct SettingSpec {
 
 // The values a setting takes and its default: "integer in [1, 4096], default 64",
 // "one of: white, blue; default blue", "true or false, default false".
-std::string describe_values(const SettingSpec& spec);
+AIRLIGHT_API std::string describe_values(const SettingSpec& spec);
 
-class Settings {
+class AIRLIGHT_API Settings {
 public:
   Settings() = default;
   explicit Settings(std::vector<SettingSpec> specs);
 
-  // "key=value"; `source` names where it came from in messages (e.g. "--set").
+  // "key=value"; `source` names where the caller got it, for messages (the
+  // command: its option; an engine: its own config file or key).
   // Throws InputError(source, key) for an unknown key or a bad value.
   void set(const std::string& assignment, const std::string& source);
   void set(const std::string& key, const std::string& value, const std::string& source);

@@ -32,7 +32,7 @@ namespace {
 // it is slow and does not vary) and measures the last against `reference`.
 Measurement measure(const Variant& variant, const Scene& scene, Size size, const Image& reference,
                     const BenchOptions& o) {
-  const bool is_reference = variant.method->name == "reference";
+  const bool is_reference = variant.method->capabilities.ground_truth;
   Measurement m;
   m.scene = scene.name;
   m.method = variant.method->name;

@@ -10,6 +10,9 @@
 
 namespace {
 
+// Bad input exits 2, any other failure 1 (docs/design.md §5).
+enum ExitStatus : int { exit_ok = 0, exit_failure = 1, exit_bad_input = 2 };
+
 int run(int argc, char** argv) {
   CLI::App cli{"airlight: single scattering in participating media, every method against one reference"};
   cli.require_subcommand(1);
@@ -37,10 +40,10 @@ int run(int argc, char** argv) {
     const auto chosen = cli.get_subcommands();
     const std::string command = chosen.empty() ? "airlight" : "airlight " + chosen.front()->get_name();
     std::fprintf(stderr, "airlight: error: %s\nrun '%s --help' for usage\n", message.c_str(), command.c_str());
-    return airlight::exit_bad_input;
+    return exit_bad_input;
   }
   for (const auto* chosen : cli.get_subcommands()) commands.at(chosen->get_name())();
-  return airlight::exit_ok;
+  return exit_ok;
 }
 
 }  // namespace
@@ -51,9 +54,9 @@ int main(int argc, char** argv) {
     return run(argc, argv);
   } catch (const airlight::InputError& e) {
     std::fprintf(stderr, "airlight: error: %s\n", e.what());
-    return airlight::exit_bad_input;
+    return exit_bad_input;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "airlight: failure: %s\n", e.what());
-    return airlight::exit_failure;
+    return exit_failure;
   }
 }

@@ -58,12 +58,12 @@ std::vector<const MethodInfo*> judged_methods(const std::string& list) {
   std::vector<const MethodInfo*> methods;
   if (list.empty()) {
     for (const auto& m : registered_methods())
-      if (m.name != "reference") methods.push_back(&m);
+      if (!m.capabilities.ground_truth) methods.push_back(&m);
     return methods;
   }
   for (const auto& name : split(list, ',')) {
     const MethodInfo& m = find_method(name, "--methods");
-    if (m.name == "reference") throw InputError("--methods", name, "the reference is what methods are judged against");
+    if (m.capabilities.ground_truth) throw InputError("--methods", name, "the reference is what methods are judged against");
     methods.push_back(&m);
   }
   return methods;

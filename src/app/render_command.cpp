@@ -79,7 +79,7 @@ void render(const RenderOptions& o) {
   std::optional<tbb::global_control> limit;
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
   const Size size = parse_size(o.size, "--size");
-  const MethodInfo& info = find_method(o.method);
+  const MethodInfo& info = find_method(o.method, "--method");
   const Settings settings = method_settings(info, o.assignments);
   check_output_file("--out", o.out, {".png", ".pfm", ".exr"});
   if (!o.report.empty()) check_output_file("--report", o.report, {".json"});

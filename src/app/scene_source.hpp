@@ -6,6 +6,9 @@
 
 namespace airlight::app {
 
+// The scene `scripts/demo` renders, and the viewer's without --scene or --builtin.
+inline constexpr const char* default_builtin = "teapot_spot";
+
 struct SceneSource {
   std::string file, builtin;
   void add_options(CLI::App& command);  // exactly one of the two is required

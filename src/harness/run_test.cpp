@@ -16,7 +16,7 @@ class Dark final : public Method {
 public:
   void prepare(const Scene&) override {}
   void render_frame(const FrameInputs& in) override { size_ = {in.width, in.height}; }
-  FrameImages read_back() override { return {Image(size_.x, size_.y), Image(size_.x, size_.y), {}, 0.0, {}}; }
+  FrameImages read_back() const override { return {Image(size_.x, size_.y), Image(size_.x, size_.y), {}, 0.0, {}}; }
 
 private:
   glm::ivec2 size_{0};
@@ -38,7 +38,7 @@ public:
     image_ = reference::render(scene_, in.width, in.height).airlight;
     for (glm::vec3& p : image_.pixels) p *= 0.5f;
   }
-  FrameImages read_back() override { return {image_, Image(image_.width, image_.height), {}, 0.0, {}}; }
+  FrameImages read_back() const override { return {image_, Image(image_.width, image_.height), {}, 0.0, {}}; }
 
 private:
   Scene scene_;

@@ -29,14 +29,15 @@ const fs::path work = fs::temp_directory_path() / ("airlight_install_test_" + st
 
 std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
-// Runs `command` with its output in work/<step>.log; on failure returns the log.
-::testing::AssertionResult step(const std::string& name, const std::string& command) {
+// Runs `command` with its output in work/<step>.log; unless it exits with
+// `status`, returns the log.
+::testing::AssertionResult step(const std::string& name, const std::string& command, int status = 0) {
   const fs::path log = work / (name + ".log");
   const int raw = std::system((command + " >" + quoted(log) + " 2>&1").c_str());
-  if (WIFEXITED(raw) && WEXITSTATUS(raw) == 0) return ::testing::AssertionSuccess();
+  if (WIFEXITED(raw) && WEXITSTATUS(raw) == status) return ::testing::AssertionSuccess();
   std::stringstream text;
   text << std::ifstream(log).rdbuf();
-  return ::testing::AssertionFailure() << name << " failed: " << command << "\n" << text.str();
+  return ::testing::AssertionFailure() << name << " did not exit " << status << ": " << command << "\n" << text.str();
 }
 
 TEST(Install, EngineExampleAgainstTheInstalledPackageMatchesRender) {
@@ -54,6 +55,11 @@ TEST(Install, EngineExampleAgainstTheInstalledPackageMatchesRender) {
   ASSERT_TRUE(step("example", quoted(build / "engine_example") + " --builtin teapot_spot --size " + size +
                                   " --set steps=256 --set sampling=equiangular --out-airlight " +
                                   quoted(work / "engine.pfm") + " --out-composite " + quoted(work / "composite.pfm")));
+  // The library's InputError caught by type in the program (exit 2, not the
+  // std::exception's 1): its type information is the library's exported one.
+  ASSERT_TRUE(step("unknown_method", quoted(build / "engine_example") + " --method bogus --size 8x8 --out-airlight " +
+                                         quoted(work / "bogus.pfm") + " --out-composite " + quoted(work / "bogus.pfm"),
+                   2));
   ASSERT_TRUE(step("render", quoted(test::airlight_exe()) + " render --builtin teapot_spot --method raymarch --set steps=256"
                              " --set sampling=equiangular --pass airlight --size " + size + " --out " +
                              quoted(work / "render.pfm")));

@@ -58,7 +58,7 @@ TEST(BuiltinScenes, EveryBuiltinLoadsWithValidData) {
 TEST(BuiltinScenes, IncludeTheDocumentsScenes) {
   const auto names = builtin_scene_names();
   for (const char* name : {"teapot_spot", "stage", "stained_glass", "biri_sphere", "biri_pens", "biri_media",
-                           "nilsson_toplight", "nilsson_parallel", "nilsson_multiple", "toth_hall", default_builtin})
+                           "nilsson_toplight", "nilsson_parallel", "nilsson_multiple", "toth_hall"})
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
 }
 

@@ -22,7 +22,7 @@ struct ViewCommandOptions {
 
 void view(ViewCommandOptions o) {
   const Size size = parse_size(o.size, "--size");
-  const MethodInfo& info = find_method(o.method);
+  const MethodInfo& info = find_method(o.method, "--method");
   const Settings settings = method_settings(info, o.assignments);  // bad settings exit 2 before a window opens
   if (!o.script.empty() && !std::ifstream(o.script))
     throw InputError("command line", "--script", "cannot read '" + o.script + "'");

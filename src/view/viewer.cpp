@@ -103,7 +103,7 @@ std::vector<std::string> viewer_methods() {
   std::vector<std::string> names;
   // The CPU reference renders seconds per frame: the issue keeps it to the background.
   for (const MethodInfo& m : registered_methods())
-    if (m.name != "reference") names.push_back(m.name);
+    if (!m.capabilities.ground_truth) names.push_back(m.name);
   return names;
 }
 
@@ -111,7 +111,7 @@ namespace {
 
 // Throws InputError(source, name) for an unknown method or the CPU reference.
 const MethodInfo& viewer_method(const std::string& name, const std::string& source) {
-  const MethodInfo& info = find_method(name);
+  const MethodInfo& info = find_method(name, "--method");
   const auto methods = viewer_methods();
   if (std::find(methods.begin(), methods.end(), info.name) == methods.end())
     throw InputError(source, info.name, "the viewer shows GPU methods; the CPU reference renders only for the error view");
@@ -161,7 +161,7 @@ bool Viewer::open() const { return !glfwWindowShouldClose(window_); }
 void Viewer::quit() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 
 void Viewer::create_method(const std::string& name, const Settings& settings) {
-  const MethodInfo& info = find_method(name);
+  const MethodInfo& info = find_method(name, "--method");
   app::check_limits(scene_, {&info, &settings});  // before the method's work, as the command checks it
   auto method = info.create(settings);
   method->prepare(scene_);

@@ -65,6 +65,7 @@ set(PUBLIC_HEADER_OWNER_image    core)
 set(PUBLIC_HEADER_OWNER_settings core)
 set(PUBLIC_HEADER_OWNER_timing   core)
 set(PUBLIC_HEADER_OWNER_box      core)
+set(PUBLIC_HEADER_OWNER_export   core)  # AIRLIGHT_API
 set(PUBLIC_HEADER_OWNER_scene    scene-model)
 set(PUBLIC_HEADER_OWNER_method   contract)
 set(PUBLIC_HEADER_OWNER_engine   contract)

@@ -23,7 +23,7 @@ public:
     rendered_ = true;
   }
 
-  FrameImages read_back() override {
+  FrameImages read_back() const override {
     if (!rendered_) throw Failure("read_back() before render_frame()");
     return images_;
   }
@@ -54,7 +54,7 @@ MethodInfo reference_method() {
            {"min_segments", T::integer, 128, 1, 4096, {},
             "initial panels per ray: shadow features thinner than 1/min_segments of the ray may be missed"}},
           [](const Settings& s) { return std::make_unique<ReferenceMethod>(s); },
-          80, reference_memory, {.engine_maps = false}, {}, {}};
+          80, reference_memory, {.engine_maps = false, .ground_truth = true}, {}, {}};
 }
 
 }  // namespace

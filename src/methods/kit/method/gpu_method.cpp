@@ -73,7 +73,7 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
 
 FrameNumbers GpuMethod::numbers() const { return {times_, stats()}; }
 
-FrameImages GpuMethod::read_back() {
+FrameImages GpuMethod::read_back() const {
   if (!rendered_) throw Failure("read_back() before render_frame()");
   gpu::SavedState state;
   const auto start = std::chrono::steady_clock::now();

@@ -37,7 +37,7 @@ public:
   void prepare(const Scene& scene) final;
   void render_frame(const FrameInputs& inputs) final;
   void render_frame(const FrameInputs& inputs, const EngineFrame& engine) final;
-  FrameImages read_back() final;
+  FrameImages read_back() const final;
   FrameNumbers numbers() const final;
 
 protected:

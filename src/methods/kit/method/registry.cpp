@@ -29,12 +29,12 @@ const std::vector<MethodInfo>& registered_methods() {
   return all;
 }
 
-const MethodInfo& find_method(const std::string& name, const std::string& option) {
+const MethodInfo& find_method(const std::string& name, const std::string& source) {
   for (const auto& m : registered_methods())
     if (m.name == name) return m;
   std::string known;
   for (const auto& m : registered_methods()) known += (known.empty() ? "" : ", ") + m.name;
-  throw InputError(option, name, "unknown method (known: " + known + ")");
+  throw InputError(source, name, "unknown method (known: " + known + ")");
 }
 
 Image select_pass(const FrameImages& frame, Pass pass) {
