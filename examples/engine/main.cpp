@@ -229,7 +229,7 @@ Options parse(int argc, char** argv) {
 
 void run(const Options& o) {
   make_context();
-  const airlight::Scene scene = o.scene_file.empty() ? airlight::builtin_scene(o.builtin)
+  const airlight::Scene scene = o.scene_file.empty() ? airlight::builtin_scene(o.builtin, "--builtin")
                                                      : airlight::load_scene(o.scene_file);
   const int w = o.width, h = o.height;
   const airlight::FrameInputs inputs = airlight::frame_inputs(scene, w, h);

@@ -129,11 +129,13 @@ AIRLIGHT_API Scene parse_scene(const std::string& json_text, const std::filesyst
 // not ending in .json, Failure when a file cannot be written.
 AIRLIGHT_API void save_scene(const Scene& scene, const std::filesystem::path& file);
 
-// Built-in scenes (docs/design.md §4). Throws InputError("--builtin", name) for an
-// unknown name, listing the known ones.
-AIRLIGHT_API Scene builtin_scene(const std::string& name);
+// Built-in scenes (docs/design.md §4). Throws InputError(source, name) for an
+// unknown name, listing the known ones: `source` names where the caller got
+// the name (the command passes its option, "--builtin").
+AIRLIGHT_API Scene builtin_scene(const std::string& name, const std::string& source = "builtin_scene");
 AIRLIGHT_API std::vector<std::string> builtin_scene_names();
 // One line on what a built-in scene shows and which document it comes from.
-AIRLIGHT_API std::string builtin_scene_description(const std::string& name);
+AIRLIGHT_API std::string builtin_scene_description(const std::string& name,
+                                                   const std::string& source = "builtin_scene_description");
 
 }  // namespace airlight

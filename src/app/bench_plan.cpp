@@ -15,7 +15,7 @@ std::vector<Scene> load_scenes(const BenchOptions& o) {
     throw InputError("--scene", "", "give --scene FILE or --builtin NAME (repeatable)");
   std::vector<Scene> scenes;
   for (const auto& file : o.scene_files) scenes.push_back(load_scene(file));
-  for (const auto& name : o.builtins) scenes.push_back(builtin_scene(name));
+  for (const auto& name : o.builtins) scenes.push_back(builtin_scene(name, "--builtin"));
   return scenes;
 }
 

@@ -15,7 +15,7 @@ void SceneSource::add_options(CLI::App& command) {
 
 Scene SceneSource::load() const {
   if (file.empty() == builtin.empty()) throw InputError("--scene", "", "give --scene FILE or --builtin NAME");
-  return file.empty() ? builtin_scene(builtin) : load_scene(file);
+  return file.empty() ? builtin_scene(builtin, "--builtin") : load_scene(file);
 }
 
 namespace {

@@ -34,23 +34,24 @@ const std::map<std::string, Builtin>& builtins() {
   return scenes;
 }
 
-// The entry of `name`; an unknown name is an error of the --builtin option, where the user
-// typed it.
-const Builtin& builtin(const std::string& name) {
+// The entry of `name`; an unknown name is an error of `source`, where the caller got it.
+const Builtin& builtin(const std::string& name, const std::string& source) {
   const auto it = builtins().find(name);
   if (it == builtins().end()) {
     std::string known;
     for (const auto& entry : builtins()) known += (known.empty() ? "" : ", ") + entry.first;
-    throw InputError("--builtin", name, "unknown built-in scene (known: " + known + ")");
+    throw InputError(source, name, "unknown built-in scene (known: " + known + ")");
   }
   return it->second;
 }
 
 }  // namespace
 
-Scene builtin_scene(const std::string& name) { return builtin(name).make(); }
+Scene builtin_scene(const std::string& name, const std::string& source) { return builtin(name, source).make(); }
 
-std::string builtin_scene_description(const std::string& name) { return builtin(name).description; }
+std::string builtin_scene_description(const std::string& name, const std::string& source) {
+  return builtin(name, source).description;
+}
 
 std::vector<std::string> builtin_scene_names() {
   std::vector<std::string> names;

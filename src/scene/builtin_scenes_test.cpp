@@ -64,7 +64,7 @@ TEST(BuiltinScenes, IncludeTheDocumentsScenes) {
 
 TEST(BuiltinScenes, EachHasADescription) {
   for (const std::string& name : builtin_scene_names()) EXPECT_GT(builtin_scene_description(name).size(), 20u) << name;
-  EXPECT_TRUE(throws_input_error([] { builtin_scene_description("nope"); }, "--builtin", "nope"));
+  EXPECT_TRUE(throws_input_error([] { builtin_scene_description("nope"); }, "builtin_scene_description", "nope"));
 }
 
 // Biri Fig. 7b: three bounded media of their own colour, each scattering one
@@ -342,7 +342,7 @@ TEST(BuiltinScenes, TothHallEnclosesTheLightAndTheCameraOutsideEveryObject) {
 
 // Named as the option the user typed it in, listing the names there are.
 TEST(BuiltinScenes, UnknownNameIsAnInputErrorListingTheKnown) {
-  EXPECT_TRUE(throws_input_error([] { builtin_scene("no_such_scene"); }, "--builtin", "no_such_scene",
+  EXPECT_TRUE(throws_input_error([] { builtin_scene("no_such_scene", "--builtin"); }, "--builtin", "no_such_scene",
                                  "unknown built-in scene (known: biri_media, biri_pens, biri_sphere, "
                                  "nilsson_multiple, nilsson_parallel, nilsson_toplight, stage, stained_glass, "
                                  "teapot_spot, three_lights, toth_hall)"));
