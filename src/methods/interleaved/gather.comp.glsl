@@ -45,9 +45,9 @@
 // Specialized by GatherPass: BLOCK (M), VERTICAL, DEPTH_AWARE, NORMALIZED and
 // GUARD, so that each pass's loops have constant trip counts and only the
 // vertical pass multiplies by the light guide.
+#include "methods/kit/frame/pixel.glsl"
 #include "methods/kit/march/march.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
 #ifdef VERTICAL
 layout(rgba32f, binding = 0) uniform image2D gathered;  // holds this pixel's own partial sum until written
 #else
@@ -141,8 +141,7 @@ vec3 guarded(vec3 value, ivec2 pixel, vec3 guide) {
 #endif
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, frame_size()))) return;
+  FRAME_PIXEL_OR_RETURN(pixel);
   int along = pixel.x * axis.x + pixel.y * axis.y;
   int size = frame_size().x * axis.x + frame_size().y * axis.y;
   float distance = surface_distance(pixel);
