@@ -16,7 +16,7 @@
 // terms (march.glsl) in rgb and its own sample count in w, for the gather to
 // estimate the standard error of the pixel's own estimate; and a pixel within
 // M pixels of a point or spot light's image marches all N samples itself (its
-// partial sum is their sum / M², w = 2), for the gather to leave it out: there
+// partial sum is their sum / M², w = PARTIAL_OWN), for the gather to leave it out: there
 // L_air changes by large factors from pixel to pixel (the 1/h peak, a gobo's
 // stripes converging on the light), and no neighbour's ray stands for it.
 // Specialized by MarchPass: SAMPLING (SAMPLING_*), JITTER, NORMALIZED and GUARD.
@@ -76,9 +76,9 @@ void main() {
   imageStore(guide_out, pixel, vec4(guide, volume_key(ray.dir, ray.d)));
   vec4 result = guided(sum, guide);
 #else
-  vec4 result = vec4(sum, 1.0);
+  vec4 result = vec4(sum, PARTIAL_SHARED);
 #endif
-  if (keeps_own) result.w = 2.0;
+  if (keeps_own) result.w = PARTIAL_OWN;
   if (first_sample > 0) result.rgb += imageLoad(airlight_out, pixel).rgb;
   imageStore(airlight_out, pixel, result);
 #ifdef GUARD
