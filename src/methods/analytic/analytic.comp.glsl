@@ -5,19 +5,16 @@
 // no volumetric shadows (Kingston §5.2.3). With SUN_F_TABLE, Γ reads Sun et
 // al.'s F(u, v) from the table at BINDING_SUN_TABLE instead of integrating it.
 #define SCENE_IN_REGISTERS
+#include "methods/kit/frame/pixel.glsl"
 #include "methods/kit/gamma/closed_form.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) writeonly uniform image2D airlight_out;
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, frame_size()))) return;
-  load_scene();
-  vec3 dir = pixel_ray(vec2(pixel) + 0.5);
-  float d = surface_distance(pixel);
+  FRAME_PIXEL_OR_RETURN(pixel);
+  PixelRay ray = load_pixel_ray(pixel);
   vec3 sum = vec3(0.0);
-#define ADD_GAMMA(i) sum += closed_form_airlight(i, frame.eye, dir, 0.0, d);
+#define ADD_GAMMA(i) sum += closed_form_airlight(i, frame.eye, ray.dir, 0.0, ray.d);
   FOR_EACH_LIGHT(ADD_GAMMA)
 #undef ADD_GAMMA
   imageStore(airlight_out, pixel, vec4(sum, 1.0));

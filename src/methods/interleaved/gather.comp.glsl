@@ -24,7 +24,7 @@
 // image, L_air ∝ 1/h changes by large factors from pixel to pixel and a plain
 // sum blurs the peak and spreads it over the cone's edge, whatever N. G carries
 // that change exactly, so what the window shares is only the smooth remainder
-// (σs·p, V, extinction). Neighbours whose rays no light reaches (G = 0, w = 0)
+// (σs·p, V, extinction). Neighbours whose rays no light reaches (G = 0, w = PARTIAL_EMPTY)
 // are left out like those across silhouettes. Volume-aware (normalized, in
 // scenes with bounded volumes; not in Tóth): the guide carries the volumes'
 // σs but not V, so a neighbour whose volume key (march.glsl: the share of its
@@ -32,7 +32,7 @@
 // volume's outline, or a shadow plane seen edge-on inside it, the G-buffer
 // distance is the same on both sides.
 // Guarded (GUARD = k > 0, not in Tóth): a pixel beside a light's image
-// marched all N samples itself (march.comp.glsl, w = 2); it is left out of
+// marched all N samples itself (march.comp.glsl, w = PARTIAL_OWN); it is left out of
 // every window and keeps its own estimate. For the others the vertical pass clamps the gathered
 // value, per channel, to P ± k·SE, where P = M²·(own partial sum) is the
 // pixel's own estimate of L_air from its N/M² samples and SE its standard
@@ -45,9 +45,9 @@
 // Specialized by GatherPass: BLOCK (M), VERTICAL, DEPTH_AWARE, NORMALIZED and
 // GUARD, so that each pass's loops have constant trip counts and only the
 // vertical pass multiplies by the light guide.
+#include "methods/kit/frame/pixel.glsl"
 #include "methods/kit/march/march.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
 #ifdef VERTICAL
 layout(rgba32f, binding = 0) uniform image2D gathered;  // holds this pixel's own partial sum until written
 #else
@@ -84,7 +84,7 @@ void fetch_neighbourhood(ivec2 pixel, int along, int size, float distance, float
     ivec2 neighbour = pixel + (clamp(s, 0, size - 1) - along) * axis;
     vec4 p = texelFetch(partial_sums, neighbour, 0);
     partial[j] = p.rgb;
-    joined[j] = s >= 0 && s < size && p.w == 1.0;  // w = 0: no light reaches; 2: keeps its own march (guard)
+    joined[j] = s >= 0 && s < size && p.w == PARTIAL_SHARED;
 #ifdef DEPTH_AWARE
     joined[j] = joined[j] && (j == BLOCK - 1 ||
                               abs(surface_distance(neighbour) - distance) <= depth_threshold * distance);
@@ -131,7 +131,7 @@ vec3 guarded(vec3 value, ivec2 pixel, vec3 guide) {
   const float blocks = float(BLOCK * BLOCK);
   vec4 partial = imageLoad(gathered, pixel);
   vec3 own = blocks * partial.rgb * guide;
-  if (partial.w == 2.0) return own;  // beside a light's image: all N samples its own (march.comp.glsl)
+  if (partial.w == PARTIAL_OWN) return own;  // beside a light's image (march.comp.glsl)
   vec4 spread = texelFetch(spreads, pixel, 0);
   float n = spread.w;
   if (n < MIN_N) return value;
@@ -141,8 +141,7 @@ vec3 guarded(vec3 value, ivec2 pixel, vec3 guide) {
 #endif
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, frame_size()))) return;
+  FRAME_PIXEL_OR_RETURN(pixel);
   int along = pixel.x * axis.x + pixel.y * axis.y;
   int size = frame_size().x * axis.x + frame_size().y * axis.y;
   float distance = surface_distance(pixel);
@@ -172,5 +171,5 @@ void main() {
   sum = guarded(sum, pixel, guide);
 #endif
 #endif
-  imageStore(gathered, pixel, vec4(sum, count > 0 ? 1.0 : 0.0));
+  imageStore(gathered, pixel, vec4(sum, count > 0 ? PARTIAL_SHARED : PARTIAL_EMPTY));
 }

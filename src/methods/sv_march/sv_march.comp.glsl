@@ -14,11 +14,11 @@
 // sampling and jitter), per light, N samples over that light's stretch only.
 // The exact parts are added by the pass's first dispatch.
 #define SCENE_IN_REGISTERS
+#include "methods/kit/frame/pixel.glsl"
 #include "methods/kit/gamma/lit_gamma.glsl"
 #include "methods/kit/march/march.glsl"
 #include "methods/kit/march/march_pass.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D airlight_out;  // accumulated over the dispatches
 layout(r32ui, binding = 1) readonly uniform uimage2DArray bounds;
 // Per light, 0 when the eye is inside its shell (LightVolumeMesh).
@@ -90,17 +90,14 @@ vec3 light_part(int i, ivec2 pixel, vec3 dir, float d, SampleRange r, float offs
 }
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, frame_size()))) return;
-  load_scene();
-  vec3 dir = pixel_ray(vec2(pixel) + 0.5);
-  float d = surface_distance(pixel);
+  FRAME_PIXEL_OR_RETURN(pixel);
+  PixelRay ray = load_pixel_ray(pixel);
   SampleRange range = SampleRange(steps, first_sample, 1, min(steps, first_sample + sample_count));
   bool exact_parts = first_sample == 0;
-  cut_into_pieces(dir, d);
+  cut_into_pieces(ray.dir, ray.d);
   float offset = step_offset(pixel);
   vec3 sum = vec3(0.0);
-#define ADD_LIGHT(i) sum += light_part(i, pixel, dir, d, range, offset, exact_parts);
+#define ADD_LIGHT(i) sum += light_part(i, pixel, ray.dir, ray.d, range, offset, exact_parts);
   FOR_EACH_LIGHT(ADD_LIGHT)
 #undef ADD_LIGHT
   if (!exact_parts) sum += imageLoad(airlight_out, pixel).rgb;

@@ -1,7 +1,7 @@
 // The fragment stage's side of a counted triangle drawn by crossings.vert.glsl
 // (the crossing lists, sv_march's bounds, beam_volumes' signed sum): which
-// triangle, whether the pixel's ray passes through it, and where. Needs
-// scene.glsl (pixel_ray, frame) included first.
+// triangle, whether the pixel's ray passes through it, and where.
+#include "methods/kit/frame/view_ray.glsl"
 #include "methods/kit/counting/lit_intervals.glsl"
 
 flat in int triangle;

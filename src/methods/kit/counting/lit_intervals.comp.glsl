@@ -13,10 +13,10 @@
 //
 // Gobos and bounded volumes: lit_gamma.glsl.
 #define SCENE_IN_REGISTERS
+#include "methods/kit/frame/pixel.glsl"
 #include "methods/kit/gamma/lit_gamma.glsl"
 #include "methods/kit/counting/lit_intervals.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
 #ifdef LOOP_LIMIT
 layout(rgba32f, binding = 0) uniform image2D airlight_out;  // passes add to it
 layout(r32ui, binding = 1) uniform uimage2D heads;          // the first pass sorts the lists
@@ -187,8 +187,7 @@ void light_airlight(int i, uint head, vec3 dir, float d, inout Walk w) {
 }
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, frame_size()))) return;
+  FRAME_PIXEL_OR_RETURN(pixel);
   Walk w = Walk(vec3(0.0), 0u, 0u, false);
   uint list = imageLoad(heads, pixel).r;
 #ifdef LOOP_LIMIT
@@ -209,11 +208,9 @@ void main() {
 #else
   list = sorted(list);
 #endif
-  load_scene();
-  vec3 dir = pixel_ray(vec2(pixel) + 0.5);
-  float d = surface_distance(pixel);
-  cut_into_pieces(dir, d);
-#define ADD_LIGHT(i) light_airlight(i, list, dir, d, w);
+  PixelRay ray = load_pixel_ray(pixel);
+  cut_into_pieces(ray.dir, ray.d);
+#define ADD_LIGHT(i) light_airlight(i, list, ray.dir, ray.d, w);
   FOR_EACH_LIGHT(ADD_LIGHT)
 #undef ADD_LIGHT
 #ifdef LOOP_LIMIT

@@ -1,6 +1,6 @@
 // G-buffer where no surface is hit: the far-plane distance along the pixel ray
 // (geometry::far_distance: the distance methods march to), no normal, no albedo.
-#include "methods/kit/frame/scene.glsl"
+#include "methods/kit/frame/view_ray.glsl"
 
 layout(location = 0) out float out_distance;
 layout(location = 1) out vec4 out_normal;

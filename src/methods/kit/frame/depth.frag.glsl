@@ -3,7 +3,7 @@
 // distance along airlight's pixel ray, capped at the far plane; gl_FragDepth is
 // that point's depth in airlight's own projection, for methods that depth-test.
 // No normals or albedo: the engine shades its own surfaces.
-#include "methods/kit/frame/scene.glsl"
+#include "methods/kit/frame/view_ray.glsl"
 
 layout(binding = BINDING_ENGINE_INPUT) uniform sampler2D engine_depth;
 uniform mat4 engine_inverse_view_projection;
@@ -19,7 +19,7 @@ void main() {
   vec3 dir = pixel_ray(gl_FragCoord.xy);
   float far = far_plane_distance(dir);
   float z = texelFetch(engine_depth, ivec2(gl_FragCoord.xy), 0).r;
-  vec4 ndc = vec4(2.0 * gl_FragCoord.xy / frame.size - 1.0, engine_zero_to_one ? z : 2.0 * z - 1.0, 1.0);
+  vec4 ndc = vec4(pixel_ndc(gl_FragCoord.xy), engine_zero_to_one ? z : 2.0 * z - 1.0, 1.0);
   vec4 world = engine_inverse_view_projection * ndc;
   // The clear value, a point at infinity (reversed-Z with an infinite far
   // plane) or one behind the eye: no surface on this ray.

@@ -1,6 +1,7 @@
 // G-buffer pass: eye distance along the pixel ray, normals facing the eye and
 // albedo, as reference.cpp's surface_point builds them from a ray hit.
 #include "methods/kit/frame/objects.glsl"
+#include "methods/kit/frame/view_ray.glsl"
 
 layout(std430, binding = BINDING_FACE_NORMALS) readonly buffer FaceNormals { vec4 face_normals[]; };
 

@@ -75,22 +75,7 @@ void load_scene() {}
 bool simplified_model() { return LIGHT_MODEL_TYPE == LIGHT_MODEL_SIMPLIFIED; }
 ivec2 frame_size() { return ivec2(frame.size); }
 
-// ---- camera (docs/design.md §5, geometry::primary_ray) ------------------------------
-
-// The unit ray direction through `pixel`, in GL window coordinates (origin at the
-// bottom-left corner; a pixel's centre is its integer corner + 0.5, as
-// gl_FragCoord.xy). Image row j (top = 0) is GL row height − 1 − j.
-vec3 pixel_ray(vec2 pixel) {
-  vec2 ndc = 2.0 * pixel / frame.size - 1.0;
-  vec2 plane = ndc * frame.tan_half_fov_y * vec2(frame.aspect, 1.0);
-  return normalize(frame.forward + plane.x * frame.right + plane.y * frame.up);
-}
-
-// Distance along unit `dir` to the camera's far plane (geometry::far_distance).
-float far_plane_distance(vec3 dir) {
-  float cos_axis = dot(dir, frame.forward);
-  return cos_axis > 0.0 ? frame.far_plane / cos_axis : positive_infinity();
-}
+// ---- G-buffer -----------------------------------------------------------------
 
 // Eye distance along the pixel's ray to the visible surface, or to the far plane.
 float surface_distance(ivec2 pixel) { return texelFetch(gbuffer_distance, pixel, 0).r; }
@@ -141,6 +126,10 @@ vec3 optical_depth(vec3 a, vec3 b) {
 
 // optics::eye_leg_depth: zero under the simplified model (T = 1, Nilsson eq. 2.15).
 vec3 eye_leg_depth(vec3 a, vec3 b) { return simplified_model() ? vec3(0.0) : optical_depth(a, b); }
+
+// T(d) = exp(−τ(eye → eye + d·dir)) per channel: the eye leg's transmittance
+// to distance d along unit `dir`.
+vec3 eye_transmittance(vec3 dir, float d) { return exp(-eye_leg_depth(frame.eye, frame.eye + d * dir)); }
 
 // A directional light with a beam (beam_length > 0), and the beam.
 bool has_beam(int i) { return light_beams[i]; }

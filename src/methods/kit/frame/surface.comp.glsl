@@ -2,9 +2,8 @@
 // Lambertian with ambient, each light's arrival (cone, beam, gobo, falloff), shadow-map
 // visibility, a light behind the triangle's plane blocked, extinction on the
 // light's leg and on the eye's (docs/design.md §1); 0 where the ray reaches the far plane.
-#include "methods/kit/frame/scene.glsl"
+#include "methods/kit/frame/pixel.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D surface_out;
 
 struct SurfacePoint {
@@ -31,16 +30,14 @@ vec3 surface_radiance(SurfacePoint s) {
 }
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, frame_size()))) return;
+  FRAME_PIXEL_OR_RETURN(pixel);
   vec4 albedo = texelFetch(gbuffer_albedo, pixel, 0);
   vec3 radiance = vec3(0.0);
   if (albedo.a > 0.0) {
-    vec3 dir = pixel_ray(vec2(pixel) + 0.5);
-    SurfacePoint s = SurfacePoint(frame.eye + surface_distance(pixel) * dir,
-                                  texelFetch(gbuffer_geometric_normal, pixel, 0).xyz,
+    PixelRay ray = load_pixel_ray(pixel);
+    SurfacePoint s = SurfacePoint(frame.eye + ray.d * ray.dir, texelFetch(gbuffer_geometric_normal, pixel, 0).xyz,
                                   texelFetch(gbuffer_normal, pixel, 0).xyz, albedo.rgb);
-    radiance = surface_radiance(s) * exp(-eye_leg_depth(frame.eye, s.position));
+    radiance = surface_radiance(s) * eye_transmittance(ray.dir, ray.d);
   }
   imageStore(surface_out, pixel, vec4(radiance, 1.0));
 }

@@ -16,7 +16,7 @@
 // terms (march.glsl) in rgb and its own sample count in w, for the gather to
 // estimate the standard error of the pixel's own estimate; and a pixel within
 // M pixels of a point or spot light's image marches all N samples itself (its
-// partial sum is their sum / M², w = 2), for the gather to leave it out: there
+// partial sum is their sum / M², w = PARTIAL_OWN), for the gather to leave it out: there
 // L_air changes by large factors from pixel to pixel (the 1/h peak, a gobo's
 // stripes converging on the light), and no neighbour's ray stands for it.
 // Specialized by MarchPass: SAMPLING (SAMPLING_*), JITTER, NORMALIZED and GUARD.
@@ -24,10 +24,10 @@
 #ifdef GUARD
 #define SPREAD
 #endif
+#include "methods/kit/frame/pixel.glsl"
 #include "methods/kit/march/march.glsl"
 #include "methods/kit/march/march_pass.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D airlight_out;  // accumulated over the dispatches
 #ifdef NORMALIZED
 layout(rgba32f, binding = 1) uniform writeonly image2D guide_out;  // the light guide, for the gather to multiply back
@@ -46,14 +46,11 @@ SampleRange pixel_samples(ivec2 pixel, bool all_samples) {
 }
 
 // Whether point `p` projects within M pixels (in x and in y) of this pixel's
-// centre, in front of the camera (pixel_ray inverted).
+// centre, in front of the camera.
 bool near_image(vec3 p, ivec2 pixel) {
   vec3 v = p - frame.eye;
-  float z = dot(v, frame.forward);
-  if (!(z > 0.0)) return false;
-  vec2 ndc = vec2(dot(v, frame.right), dot(v, frame.up)) / (z * frame.tan_half_fov_y * vec2(frame.aspect, 1.0));
-  vec2 at = (ndc + 1.0) * 0.5 * frame.size;
-  return all(lessThanEqual(abs(at - (vec2(pixel) + 0.5)), vec2(float(block))));
+  if (!(dot(v, frame.forward) > 0.0)) return false;
+  return all(lessThanEqual(abs(window_of(v) - (vec2(pixel) + 0.5)), vec2(float(block))));
 }
 
 bool near_light_image(ivec2 pixel) {
@@ -67,24 +64,21 @@ bool near_light_image(ivec2 pixel) {
 }
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, frame_size()))) return;
-  load_scene();
-  vec3 dir = pixel_ray(vec2(pixel) + 0.5);
-  float d = surface_distance(pixel);
+  FRAME_PIXEL_OR_RETURN(pixel);
+  PixelRay ray = load_pixel_ray(pixel);
   bool keeps_own = near_light_image(pixel);
   SampleRange range = pixel_samples(pixel, keeps_own);
-  cut_into_pieces(dir, d);  // for where the steps go (march.glsl)
-  vec3 sum = march_airlight(dir, d, range, step_offset(pixel));
+  cut_into_pieces(ray.dir, ray.d);  // for where the steps go (march.glsl)
+  vec3 sum = march_airlight(ray.dir, ray.d, range, step_offset(pixel));
   if (keeps_own) sum /= float(block * block);  // as a partial sum: M² times it is the pixel's estimate
 #ifdef NORMALIZED
-  vec3 guide = light_guide(dir, d);
-  imageStore(guide_out, pixel, vec4(guide, volume_key(dir, d)));
+  vec3 guide = light_guide(ray.dir, ray.d);
+  imageStore(guide_out, pixel, vec4(guide, volume_key(ray.dir, ray.d)));
   vec4 result = guided(sum, guide);
 #else
-  vec4 result = vec4(sum, 1.0);
+  vec4 result = vec4(sum, PARTIAL_SHARED);
 #endif
-  if (keeps_own) result.w = 2.0;
+  if (keeps_own) result.w = PARTIAL_OWN;
   if (first_sample > 0) result.rgb += imageLoad(airlight_out, pixel).rgb;
   imageStore(airlight_out, pixel, result);
 #ifdef GUARD

@@ -386,9 +386,16 @@ float volume_key(vec3 dir, float d) {
 float volume_key(vec3 dir, float d) { return 0.0; }
 #endif
 
+// What the w of a partial sum says: the march (march.comp.glsl) writes it, the
+// gather (methods/interleaved/gather.comp.glsl) reads it and writes its own
+// passes' sums with the first two.
+const float PARTIAL_EMPTY = 0.0;   // nothing to share: no light reaches the ray (normalized), no neighbour joined
+const float PARTIAL_SHARED = 1.0;  // a partial sum for the gather to share
+const float PARTIAL_OWN = 2.0;     // all N samples the pixel's own (guard): left out of every window
+
 // A pixel's sum divided by its guide per channel (0 where the guide is), and in
-// w whether any light reaches its ray (1) or not (0).
+// w whether any light reaches its ray (PARTIAL_SHARED) or not (PARTIAL_EMPTY).
 vec4 guided(vec3 sum, vec3 guide) {
   bvec3 lit = greaterThan(guide, vec3(0.0));
-  return vec4(mix(vec3(0.0), sum / max(guide, vec3(1e-30)), lit), any(lit) ? 1.0 : 0.0);
+  return vec4(mix(vec3(0.0), sum / max(guide, vec3(1e-30)), lit), any(lit) ? PARTIAL_SHARED : PARTIAL_EMPTY);
 }
