@@ -3,6 +3,7 @@
 #include "methods/kit/counting/lit_interval_pass.hpp"
 #include "methods/kit/method/memory_needs.hpp"
 
+#include "gpu/growing_buffer.hpp"
 #include "gpu/program.hpp"
 #include "methods/kit/method/registry.hpp"
 
@@ -47,11 +48,7 @@ private:
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, zero);
     if (faces.empty()) return;
-    if (faces.size() > face_capacity_ || faces_.id() == 0) {
-      face_capacity_ = faces.size();
-      faces_ = gpu::make_buffer(face_capacity_ * sizeof(kit::CountedTriangle), nullptr);
-    }
-    glNamedBufferSubData(faces_.id(), 0, faces.size() * sizeof(kit::CountedTriangle), faces.data());
+    faces_.assign(faces);
     const gpu::Program& program = gpu::cached_program(
         {{GL_VERTEX_SHADER, "methods/kit/counting/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/beam_volumes/signed.frag.glsl"}},
         frame.defines() + kit::lit_interval_defines());
@@ -88,8 +85,7 @@ private:
   bool signed_;
   gpu::Framebuffer fbo_;
   gpu::VertexArray no_vertices_;
-  gpu::Buffer faces_;
-  size_t face_capacity_ = 0;
+  gpu::GrowingBuffer<kit::CountedTriangle> faces_;
 };
 
 // Per light, the beam tree over every caster triangle, its visible pieces and

@@ -163,7 +163,7 @@ void CountedDraw::prepare() {
   fbo_ = gpu::make_framebuffer();
   no_vertices_ = gpu::make_vertex_array();  // the triangles come from their buffer by gl_VertexID
   kept_draw_ = gpu::make_buffer(4 * sizeof(GLuint), nullptr);
-  kept_capacity_ = 0;
+  kept_.release();
   // A storage binding holds at most GL_MAX_SHADER_STORAGE_BLOCK_SIZE bytes
   // (128 MiB on llvmpipe: 1.68 M triangles); larger sets are drawn in ranges
   // whose offsets keep the binding's alignment.
@@ -183,10 +183,7 @@ void CountedDraw::prepare() {
 // The bound range's triangles that may cross a pixel's ray, into kept_ and the
 // indirect draw's count (cull_counted.comp.glsl).
 void CountedDraw::keep_crossing(const SceneFrame& frame, size_t n) {
-  if (n > kept_capacity_) {
-    kept_capacity_ = n;
-    kept_ = gpu::make_buffer(n * sizeof(GLuint), nullptr);
-  }
+  kept_.reserve(n);
   const GLuint command[4] = {0, 1, 0, 0};  // vertex count, instances, first vertex, base instance
   glNamedBufferSubData(kept_draw_.id(), 0, sizeof(command), command);
   const gpu::Program& cull =
@@ -268,13 +265,8 @@ void LitIntervalPass::run(const SceneFrame& frame, const std::vector<CountedTria
                           const EyeCounts& eye, const gpu::Texture& target, gpu::PassTimer& timer) {
   {
     gpu::ScopedPass pass(timer, "crossings");
-    if (triangles.size() > triangle_capacity_ || triangles_.id() == 0) {
-      triangle_capacity_ = std::max<size_t>(triangles.size(), 1);
-      triangles_ = gpu::make_buffer(triangle_capacity_ * sizeof(CountedTriangle), nullptr);
-    }
-    if (!triangles.empty())
-      glNamedBufferSubData(triangles_.id(), 0, triangles.size() * sizeof(CountedTriangle), triangles.data());
-    list_crossings(frame, triangles_, triangles.size());
+    triangles_.assign(triangles);
+    list_crossings(frame, triangles_.buffer(), triangles.size());
   }
   gpu::ScopedPass pass(timer, "airlight");
   resolve(frame, eye, target);

@@ -6,6 +6,7 @@
 // over each light's lit intervals into the target ("airlight",
 // lit_intervals.comp.glsl). Shared by shadow_planes and beam_volumes.
 #include "gpu/gl.hpp"
+#include "gpu/growing_buffer.hpp"
 #include "gpu/timer.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
 
@@ -103,8 +104,8 @@ private:
   void keep_crossing(const SceneFrame& frame, size_t n);
 
   size_t range_triangles_ = 1;  // triangles per storage binding
-  gpu::Buffer kept_, kept_draw_;  // the kept triangles' indices; their indirect draw
-  size_t kept_capacity_ = 0;
+  gpu::GrowingBuffer<GLuint> kept_;  // the kept triangles' indices
+  gpu::Buffer kept_draw_;            // their indirect draw
   gpu::Framebuffer fbo_;
   gpu::VertexArray no_vertices_;
   int width_ = 0, height_ = 0;
@@ -142,8 +143,9 @@ private:
 
   double capacity_per_pixel_;
   int samples_;
-  gpu::Buffer triangles_, nodes_, node_count_;
-  size_t triangle_capacity_ = 0, node_capacity_ = 0;
+  gpu::GrowingBuffer<CountedTriangle> triangles_;  // run()'s from the CPU
+  gpu::Buffer nodes_, node_count_;
+  size_t node_capacity_ = 0;
   gpu::Texture heads_;
   CountedDraw counted_draw_;
   int width_ = 0, height_ = 0;

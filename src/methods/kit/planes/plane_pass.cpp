@@ -75,6 +75,7 @@ void PlanePass::prepare(const Scene& scene) {
   mesh_ = gpu::make_vertex_array();  // no attributes: vertices come from gl_VertexID
   glVertexArrayElementBuffer(mesh_.id(), indices_.id());
   region_mesh_ = gpu::make_vertex_array();  // RegionVertex: position, then plane
+  region_vertices_.release();  // bound to the new region_mesh_ when made again
   glEnableVertexArrayAttrib(region_mesh_.id(), 0);
   glVertexArrayAttribFormat(region_mesh_.id(), 0, 3, GL_FLOAT, GL_FALSE, offsetof(RegionVertex, position));
   glVertexArrayAttribBinding(region_mesh_.id(), 0, 0);
@@ -217,12 +218,8 @@ void PlanePass::draw_regions(const SceneFrame& frame, int light, const Slabs& s,
 void PlanePass::upload(const std::vector<RegionVertex>& vertices) {
   region_count_ = static_cast<int>(vertices.size());
   if (vertices.empty()) return;
-  if (vertices.size() > region_capacity_) {
-    region_capacity_ = 2 * vertices.size();
-    region_vertices_ = gpu::make_buffer(region_capacity_ * sizeof(RegionVertex), nullptr);
+  if (region_vertices_.assign(vertices))
     glVertexArrayVertexBuffer(region_mesh_.id(), 0, region_vertices_.id(), 0, sizeof(RegionVertex));
-  }
-  glNamedBufferSubData(region_vertices_.id(), 0, vertices.size() * sizeof(RegionVertex), vertices.data());
 }
 
 void PlanePass::draw(const SceneFrame& frame, int light, Part part, const Slabs& s, const std::vector<glm::vec4>& clip) {

@@ -6,6 +6,7 @@
 // the RGBA32F airlight target. Shared by planes and by Nilsson's hybrids
 // (§5.3–5.4), which draw each plane as its fully lit and uncertain parts
 // (slab_regions.hpp) instead of the lattice.
+#include "gpu/growing_buffer.hpp"
 #include "methods/kit/planes/light_bounds.hpp"
 #include "methods/kit/sampling/noise.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
@@ -83,8 +84,8 @@ private:
   SlabRegions slab_regions_;
   gpu::Texture noise_;
   gpu::VertexArray mesh_, region_mesh_, no_vertices_;
-  gpu::Buffer indices_, region_vertices_;
-  size_t region_capacity_ = 0;
+  gpu::Buffer indices_;
+  gpu::GrowingBuffer<RegionVertex> region_vertices_{2};
   int region_count_ = 0;
   gpu::Framebuffer fbo_;
   gpu::Query invocations_;
