@@ -4,6 +4,7 @@
 #include "gpu/context.hpp"
 #include "gpu/program.hpp"
 #include "methods/kit/frame/frame_data.hpp"
+#include "methods/kit/frame/model_of.hpp"
 #include "methods/kit/frame/scene_defines.hpp"
 #include "methods/kit/frame/shadows/shadow_projection.hpp"
 #include "optics/light.hpp"
@@ -236,7 +237,7 @@ void SceneFrame::upload_gobos(const Scene& scene) {
 void SceneFrame::upload_inputs(const FrameSettings& settings, const EngineFrame* engine, bool shadows) {
   std::vector<ObjectTransform> objects;
   for (size_t m = 0; m < scene_.meshes.size(); ++m) {
-    const glm::mat4 model = inputs_.transforms.empty() ? glm::mat4(1.0f) : inputs_.transforms[m];
+    const glm::mat4 model = model_of(inputs_.transforms, m);
     objects.push_back({model, glm::transpose(glm::inverse(model))});
   }
   update(objects_, objects);

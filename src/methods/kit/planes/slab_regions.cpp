@@ -215,7 +215,7 @@ void SlabRegions::build(const FrameInputs& inputs, int light, int count, float d
   std::vector<geometry::BoundingVolumes> posed = volumes_;
   for (size_t k = 0; k < posed.size(); ++k) {
     geometry::BoundingVolumes& v = posed[k];
-    if (!inputs.transforms.empty()) {
+    if (!inputs.transforms.empty()) {  // not model_of's identity: moved() would renormalize the boxes' axes
       const glm::mat4& m = inputs.transforms[meshes_[k]];
       v.outer = moved(v.outer, m);
       if (v.inner) v.inner = moved(*v.inner, m);

@@ -1,5 +1,6 @@
 #include "methods/kit/frame/shadows/shadow_projection.hpp"
 
+#include "methods/kit/frame/model_of.hpp"
 #include "optics/light.hpp"
 
 #include <algorithm>
@@ -41,7 +42,7 @@ Bounds world_bounds(const std::vector<Bounds>& meshes, const std::vector<glm::ma
   for (size_t m = 0; m < meshes.size(); ++m) {
     const Bounds& local = meshes[m];
     if (local.empty()) continue;
-    const glm::dmat4 model = transforms.empty() ? glm::dmat4(1.0) : glm::dmat4(transforms[m]);
+    const glm::dmat4 model = glm::dmat4(model_of(transforms, m));
     for (int k = 0; k < 8; ++k) b.add(glm::dvec3(model * glm::dvec4(local.corner(k), 1.0)));
   }
   return b;
