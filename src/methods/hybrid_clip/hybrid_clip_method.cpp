@@ -1,8 +1,6 @@
 #include "methods/kit/planes/plane_method.hpp"
 #include "methods/kit/method/registry.hpp"
 
-#include <memory>
-
 namespace airlight::methods {
 namespace {
 
@@ -14,11 +12,11 @@ MethodInfo hybrid_clip_method() {
           "rasterized, fully lit parts sampled without the shadow-map test, uncertain parts with it; with "
           "sampling=plane the image of planes, from fewer fragments",
           kit::gpu_settings(kit::plane_settings(true)),
-          [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::clip); },
+          kit::create<kit::PlaneMethod>(kit::PlaneRegions::clip),
           160, kit::gpu_memory(kit::slab_region_needs), {.caster_triangles = true},
-          {{"high quality", {"planes=1024", "shadow_resolution=2048"}, Trial::Measure::rel_rmse, 0.03,
-            "1024 planes per light clipped by the bounding volumes' beam trees, 2048² maps: the slabs' sampling "
-            "is what is left; 3 % is issue 25's bound for sampling methods at high quality"}}, {}};
+          {kit::high_quality_trial({"planes=1024", "shadow_resolution=2048"},
+            "1024 planes per light clipped by the bounding volumes' beam trees, 2048² maps: the slabs' "
+            "sampling is what is left")}, {}};
 }
 
 }  // namespace
