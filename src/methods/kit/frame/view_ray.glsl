@@ -9,7 +9,7 @@ vec3 view_ray(vec2 ndc) {
 }
 
 // The clip-space position of the point at view depth z through `ndc`, as
-// frame.view_projection maps it (glm::frustum, scene_frame.cpp), computed
+// frame.view_projection maps it (glm::frustum, kit/frame/uploads.cpp), computed
 // without world coordinates: eye + z·ray rounds to the eye's ulp, and a plane
 // rasterized just past a near plane of 0.1 mm, 1 m from the origin, fell in
 // front of it and was clipped (random scene 75: planes 13 % dark).
