@@ -14,7 +14,7 @@
 #include "gpu/timer.hpp"
 #include "methods/kit/frame/bindings.hpp"
 #include "methods/kit/frame/frame_data.hpp"
-#include "methods/kit/frame/shadows/shadow_projection.hpp"
+#include "methods/kit/frame/shadows/caster_bounds.hpp"
 
 #include <airlight/engine.hpp>
 #include <airlight/image.hpp>

@@ -5,6 +5,7 @@
 #include "methods/kit/frame/model_of.hpp"
 #include "methods/kit/frame/scene_defines.hpp"
 #include "methods/kit/frame/scene_frame_parts.hpp"
+#include "methods/kit/frame/shadows/engine_projection.hpp"
 #include "methods/kit/frame/shadows/shadow_projection.hpp"
 #include "optics/light.hpp"
 

@@ -1,6 +1,7 @@
 #include "methods/kit/frame/scene_frame.hpp"
 
 #include "methods/kit/frame/scene_frame_parts.hpp"
+#include "methods/kit/frame/shadows/engine_projection.hpp"
 
 #include <algorithm>
 #include <glm/matrix.hpp>
