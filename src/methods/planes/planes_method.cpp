@@ -11,7 +11,7 @@ MethodInfo planes_method() {
           "I(θ,φ)·ξ·V·Δt (light map, ξ per fragment or on a lattice mesh, shadow-map test) by additive blending "
           "into a float target",
           kit::gpu_settings(kit::plane_settings()),
-          kit::create<kit::PlaneMethod>(kit::PlaneRegions::none),
+          kit::create<kit::PlaneMethod>(kit::PlaneCut::none),
           160, kit::gpu_memory(), {},
           {kit::high_quality_trial({"planes=1024", "shadow_resolution=2048"},
             "1024 planes per light through its lit region and 2048² maps: the slabs' sampling is what is "

@@ -16,7 +16,7 @@ struct Registration {
 };
 
 // MethodInfo::create of a method made from its settings and `args`:
-// create<Raymarch>(), create<PlaneMethod>(PlaneRegions::gamma).
+// create<Raymarch>(), create<PlaneMethod>(PlaneCut::gamma).
 template <class M, class... Args>
 auto create(Args... args) {
   return [args...](const Settings& s) -> std::unique_ptr<Method> { return std::make_unique<M>(s, args...); };

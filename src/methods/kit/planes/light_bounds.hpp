@@ -46,7 +46,7 @@ double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& cam
 // changed is traced again; when an object moves, the ray caster is rebuilt on
 // the posed scene and every light is traced again. Nothing is redone for a
 // frame that only moves the camera or changes colours and the medium.
-class LitRegions {
+class FrameLightBounds {
 public:
   void prepare(const Scene& scene);
   void update(const FrameInputs& inputs);
