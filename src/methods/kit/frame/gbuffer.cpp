@@ -17,10 +17,10 @@ void SceneFrame::resize(int width, int height) {
   depth_ = render_target(GL_DEPTH_COMPONENT32F, width, height);
   surface_ = render_target(GL_RGBA32F, width, height);
   const GLuint fbo = gbuffer_fbo_.id();
-  const GLuint colours[] = {distance_.id(), normal_.id(), geometric_normal_.id(), albedo_.id()};
+  const GLuint colors[] = {distance_.id(), normal_.id(), geometric_normal_.id(), albedo_.id()};
   GLenum buffers[4];
   for (GLuint k = 0; k < 4; ++k) {
-    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0 + k, colours[k], 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0 + k, colors[k], 0);
     buffers[k] = GL_COLOR_ATTACHMENT0 + k;
   }
   glNamedFramebufferDrawBuffers(fbo, 4, buffers);
