@@ -12,7 +12,7 @@ namespace binding {
 inline constexpr GLuint frame_block = 0;     // uniform block FrameBlock (std140)
 inline constexpr GLuint lights = 0;          // SSBO SceneLight[] (std430)
 inline constexpr GLuint volumes = 1;         // SSBO SceneVolume[]
-inline constexpr GLuint lobes = 2;           // SSBO PhaseLobe[] (medium's, then each volume's)
+inline constexpr GLuint lobes = 2;           // SSBO SceneLobe[] (medium's, then each volume's)
 inline constexpr GLuint face_normals = 3;    // SSBO vec4[] per triangle (G-buffer pass only)
 inline constexpr GLuint objects = 4;         // SSBO ObjectTransform[] per mesh (G-buffer and shadow passes)
 inline constexpr GLuint first_free_storage = 8;
