@@ -290,9 +290,9 @@ void run(const Options& o) {
   depth.view = glm::lookAt(camera.position, camera.look_at, camera.up);
   depth.projection = reversed_infinite_projection(camera, w, h);
   depth.range = airlight::DepthRange::zero_to_one;
-  const GLuint colour = texture_2d(GL_RGBA16F, w, h);
+  const GLuint color = texture_2d(GL_RGBA16F, w, h);
   glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, depth.texture, 0);
-  glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, colour, 0);
+  glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, color, 0);
   glNamedFramebufferDrawBuffer(framebuffer, GL_COLOR_ATTACHMENT0);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glDepthFunc(GL_GREATER);
@@ -322,12 +322,12 @@ void run(const Options& o) {
   frame.shadows = shadows;
   frame.target.airlight = texture_2d(GL_RGBA32F, w, h);
   frame.target.transmittance = texture_2d(GL_RGBA32F, w, h);
-  frame.target.colour = colour;
+  frame.target.color = color;
   method->render_frame(inputs, frame);
   check_gl("airlight");
 
   write_pfm(frame.target.airlight, w, h, o.out_airlight);
-  write_pfm(colour, w, h, o.out_composite);
+  write_pfm(color, w, h, o.out_composite);
 }
 
 }  // namespace

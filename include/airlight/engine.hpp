@@ -77,7 +77,7 @@ struct AIRLIGHT_API EngineShadow {
 struct AIRLIGHT_API EngineTarget {
   unsigned airlight = 0;       // RGBA32F or RGBA16F: L_air, W/(m²·sr)
   unsigned transmittance = 0;  // RGBA32F or RGBA16F: T(d) per channel, what compositing needs
-  unsigned colour = 0;         // any colour-renderable texture holding linear L_surf in W/(m²·sr)
+  unsigned color = 0;          // any colour-renderable texture holding linear L_surf in W/(m²·sr)
                                // (before exposure and tone mapping): becomes L_surf·T + L_air
   unsigned surface = 0;        // RGBA32F or RGBA16F: airlight's own L_surf·T(d) (its G-buffer and
                                // shading, as read_back's `surface`), for a caller with no shading of

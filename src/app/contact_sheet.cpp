@@ -50,13 +50,13 @@ std::uint32_t rgb24(double r, double g, double b) {
 
 // A w·scale × h·scale surface, each pixel repeated scale² times (nearest
 // neighbour, so that single-pixel artefacts stay sharp).
-SurfacePtr pixel_surface(int w, int h, int scale, const std::function<std::uint32_t(int, int)>& colour) {
+SurfacePtr pixel_surface(int w, int h, int scale, const std::function<std::uint32_t(int, int)>& color) {
   SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w * scale, h * scale), cairo_surface_destroy);
   unsigned char* data = cairo_image_surface_get_data(surface.get());
   const int stride = cairo_image_surface_get_stride(surface.get());
   for (int y = 0; y < h * scale; ++y) {
     auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<ptrdiff_t>(y) * stride);
-    for (int x = 0; x < w * scale; ++x) row[x] = colour(x / scale, y / scale);
+    for (int x = 0; x < w * scale; ++x) row[x] = color(x / scale, y / scale);
   }
   cairo_surface_mark_dirty(surface.get());
   return surface;
@@ -151,7 +151,7 @@ std::vector<std::string> bar_caption(const HeatScale& scale, double width) {
 
 // The heat maps' colour scale under its caption, ticks at quarters of its top,
 // the last one "≥ top".
-void draw_colour_bar(cairo_t* cr, double x, double y, double width, const std::vector<std::string>& caption,
+void draw_color_bar(cairo_t* cr, double x, double y, double width, const std::vector<std::string>& caption,
                      double max_error) {
   cairo_set_source_rgb(cr, 0, 0, 0);
   for (size_t i = 0; i < caption.size(); ++i) text_at(cr, x, y + line_h * (i + 1.0) - 3.0, caption[i]);
@@ -223,7 +223,7 @@ void write_contact_sheet(const std::vector<SheetEntry>& entries, const HeatScale
     paint(cr, tone_mapped(*e.image, zoom, tone).get(), image_x, margin + label_h);
     paint(cr, heat_map(*e.image, reference, zoom, scale.top).get(), image_x, heat_y);
   }
-  draw_colour_bar(cr, margin, bar_y, sheet_w - 2 * margin, caption, scale.top);
+  draw_color_bar(cr, margin, bar_y, sheet_w - 2 * margin, caption, scale.top);
   cairo_surface_flush(sheet.get());
   write_atomically(file, [&](const std::filesystem::path& temp) {
     if (const cairo_status_t status = cairo_surface_write_to_png(sheet.get(), temp.c_str());

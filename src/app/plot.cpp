@@ -54,7 +54,7 @@ struct Axes {
   double py(double error) const { return bottom - y.fraction(error) * (bottom - top); }
 };
 
-void set_colour(cairo_t* cr, const std::array<double, 3>& c) { cairo_set_source_rgb(cr, c[0], c[1], c[2]); }
+void set_color(cairo_t* cr, const std::array<double, 3>& c) { cairo_set_source_rgb(cr, c[0], c[1], c[2]); }
 
 // "10" with the exponent raised, its right edge or centre at (x, y) as `align` is 1 or 0.5.
 void decade_label(cairo_t* cr, int exponent, double x, double y, double align) {
@@ -131,8 +131,8 @@ void marker(cairo_t* cr, double x, double y, double radius, bool filled) {
 }
 
 void draw_series(cairo_t* cr, const Axes& a, const std::vector<PlotPoint>& points,
-                 const std::array<double, 3>& colour) {
-  set_colour(cr, colour);
+                 const std::array<double, 3>& color) {
+  set_color(cr, color);
   cairo_set_line_width(cr, 2);
   for (size_t i = 0; i < points.size(); ++i) {
     const double x = a.px(points[i].seconds), y = a.py(points[i].error);
@@ -166,7 +166,7 @@ void draw_legend(cairo_t* cr, const std::vector<PlotSeries>& series) {
   double y = top + 10;
   cairo_set_font_size(cr, 13);
   for (size_t i = 0; i < series.size(); ++i, y += 22) {
-    set_colour(cr, palette[i % palette.size()]);
+    set_color(cr, palette[i % palette.size()]);
     cairo_set_line_width(cr, 2);
     line(cr, right + 20, y, right + 50, y);
     marker(cr, right + 35, y, 4, true);

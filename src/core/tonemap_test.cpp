@@ -30,12 +30,12 @@ float shown_luminance(glm::vec3 radiance, ToneCurve curve) {
 
 TEST(ToneMap, EveryCurveIsMonotonicInLuminanceFrom1eMinus4To1e4) {
   for (ToneCurve curve : curves)
-    for (glm::vec3 colour : {glm::vec3(1.0f), glm::vec3(1.0f, 0.6f, 0.25f), glm::vec3(0.1f, 0.3f, 1.0f)}) {
-      const float first = shown_luminance(colour * 1e-4f, curve);
+    for (glm::vec3 color : {glm::vec3(1.0f), glm::vec3(1.0f, 0.6f, 0.25f), glm::vec3(0.1f, 0.3f, 1.0f)}) {
+      const float first = shown_luminance(color * 1e-4f, curve);
       float highest = first, y = first;
       for (int i = 1; i <= 160; ++i) {  // 20 steps a decade
         const float scale = std::pow(10.0f, -4.0f + i / 20.0f);
-        y = shown_luminance(colour * scale, curve);
+        y = shown_luminance(color * scale, curve);
         // 1e-3, a ninth of the 8-bit step at white (0.0089 linear): as a saturated colour
         // reaches white, AgX's outset matrix gives back up to 2.4e-4 of luminance.
         EXPECT_GE(y, highest - 1e-3f) << tone_curve_name(curve) << " at " << scale;
@@ -131,10 +131,10 @@ TEST(ToneMap, NonFiniteAndNegativeRadianceNeverReachAPng) {
 }
 
 TEST(AutoExposure, MapsTheLogAverageLuminanceToTheKey) {
-  const glm::vec3 colour(0.1f, 0.05f, 0.02f);
-  const float y = luminance(colour);
+  const glm::vec3 color(0.1f, 0.05f, 0.02f);
+  const float y = luminance(color);
   // 1e-4 relative: δ = 1e-6 in log(δ + Y) shifts the average by δ/Y = 2e-5.
-  EXPECT_NEAR(auto_exposure(Image(8, 4, colour)), 0.18f / y, 1e-4f * 0.18f / y);
+  EXPECT_NEAR(auto_exposure(Image(8, 4, color)), 0.18f / y, 1e-4f * 0.18f / y);
   // The log average is the geometric mean: half the pixels 0.01, half 1 average 0.1.
   Image halves(8, 4, glm::vec3(0.01f));
   for (int x = 0; x < 4; ++x)

@@ -26,7 +26,7 @@ SavedState::SavedState() {
   glGetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth_);
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
-  glGetBooleanv(GL_COLOR_WRITEMASK, colour_mask_.data());
+  glGetBooleanv(GL_COLOR_WRITEMASK, color_mask_.data());
   glGetIntegerv(GL_BLEND_SRC_RGB, &blend_src_rgb_);
   glGetIntegerv(GL_BLEND_DST_RGB, &blend_dst_rgb_);
   glGetIntegerv(GL_BLEND_SRC_ALPHA, &blend_src_alpha_);
@@ -52,7 +52,7 @@ SavedState::~SavedState() {
   glClipControl(static_cast<GLenum>(clip_origin_), static_cast<GLenum>(clip_depth_));
   glDepthFunc(static_cast<GLenum>(depth_func_));
   glDepthMask(depth_mask_);
-  glColorMask(colour_mask_[0], colour_mask_[1], colour_mask_[2], colour_mask_[3]);
+  glColorMask(color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
   glBlendFuncSeparate(static_cast<GLenum>(blend_src_rgb_), static_cast<GLenum>(blend_dst_rgb_),
                       static_cast<GLenum>(blend_src_alpha_), static_cast<GLenum>(blend_dst_alpha_));
   glBlendEquationSeparate(static_cast<GLenum>(blend_equation_rgb_), static_cast<GLenum>(blend_equation_alpha_));

@@ -23,7 +23,7 @@ private:
   std::array<GLint, 4> viewport_{};
   GLint clip_origin_ = 0, clip_depth_ = 0, depth_func_ = 0;
   GLboolean depth_mask_ = GL_TRUE;
-  std::array<GLboolean, 4> colour_mask_{};
+  std::array<GLboolean, 4> color_mask_{};
   GLint blend_src_rgb_ = 0, blend_dst_rgb_ = 0, blend_src_alpha_ = 0, blend_dst_alpha_ = 0;
   GLint blend_equation_rgb_ = 0, blend_equation_alpha_ = 0;
   std::array<GLboolean, 8 + 8> enabled_{};  // capabilities(), in order

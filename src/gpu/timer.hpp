@@ -1,9 +1,11 @@
 #pragma once
 // Time per pass (docs/design.md §3: every method reports its GPU time per pass). On a
-// GPU: GL_TIME_ELAPSED queries. On llvmpipe the queries do not see compute
-// dispatches (and report garbage for draws), but there the CPU is the GPU: each
-// pass is bracketed by glFinish and timed by the wall clock instead. Passes do
-// not nest; results are read once, after the frame.
+// GPU: a pair of GL_TIMESTAMP queries, which, unlike GL_TIME_ELAPSED, may run
+// inside another timer's pass (the light volume mesh times its build inside
+// its method's). On llvmpipe the queries do not see compute dispatches (and
+// report garbage for draws), but there the CPU is the GPU: each pass is
+// bracketed by glFinish and timed by the wall clock instead. One timer's
+// passes do not nest; results are read once, after the frame.
 #include "gpu/gl.hpp"
 
 #include <airlight/timing.hpp>
@@ -25,7 +27,7 @@ public:
 private:
   struct Pending {
     std::string pass;
-    Query query;                                 // GPU clock
+    Query began, ended;                          // GPU clock: timestamps
     std::chrono::steady_clock::time_point start; // software renderer: wall clock
     double seconds = 0.0;
   };

@@ -243,7 +243,7 @@ double dimming(const Draft& d, double distance) {
 
 void scale_light(Draft& d, Light& light, double k) {
   const double sigma_s = mean(d.scene.medium.sigma_s), sigma_t = mean(d.scene.medium.sigma_t());
-  const Color colour = tint(d.r, d.structure.grey, 0.3);
+  const Color color = tint(d.r, d.structure.grey, 0.3);
   if (light.type == LightType::directional) {
     // σs·E·ℓ/(4π) over the stretch ℓ that the fog lets the eye see, or the beam's width.
     double reach = std::min(d.box.diagonal(), 1.0 / sigma_t);
@@ -252,10 +252,10 @@ void scale_light(Draft& d, Light& light, double k) {
       reach = std::min(reach, double(std::min(light.beam->size.x, light.beam->size.y)));
       from = glm::distance(dvec3(d.scene.camera.position), dvec3(light.beam->origin));
     }
-    light.irradiance = colour * float(k * 4.0 * std::numbers::pi / (sigma_s * reach) * dimming(d, from));
+    light.irradiance = color * float(k * 4.0 * std::numbers::pi / (sigma_s * reach) * dimming(d, from));
   } else {
     const double r = glm::distance(dvec3(d.scene.camera.position), dvec3(light.position));
-    light.intensity = colour * float(k * 4.0 * std::max(r, 1e-3 * d.size) / sigma_s * dimming(d, r));
+    light.intensity = color * float(k * 4.0 * std::max(r, 1e-3 * d.size) / sigma_s * dimming(d, r));
   }
 }
 

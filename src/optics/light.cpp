@@ -62,7 +62,7 @@ bool inside_unit_square(const glm::dvec2& uv) {
 bool has_gobo(const Light& light) { return light.gobo && !light.gobo->empty(); }
 
 // The gobo's colour at uv: black outside the unit square (docs/design.md §1).
-glm::dvec3 gobo_colour(const Image& gobo, const glm::dvec2& uv) {
+glm::dvec3 gobo_color(const Image& gobo, const glm::dvec2& uv) {
   return inside_unit_square(uv) ? sample_gobo(gobo, uv) : glm::dvec3(0.0);
 }
 
@@ -70,7 +70,7 @@ glm::dvec3 gobo_colour(const Image& gobo, const glm::dvec2& uv) {
 glm::dvec3 spot_map(const Light& light, const glm::dvec3& dir) {
   const double cone = spot_cone(light, dir);
   if (cone == 0.0 || !has_gobo(light)) return glm::dvec3(cone);
-  return cone * gobo_colour(*light.gobo, gobo_uv(light, dir));
+  return cone * gobo_color(*light.gobo, gobo_uv(light, dir));
 }
 
 // x − beam.origin in the beam's frame: (along right, along up, along the axis).
@@ -89,7 +89,7 @@ glm::dvec2 across(const Beam& beam, const glm::dvec3& p) {
 // A beam's light map at x: inside the box, the gobo colour across the aperture.
 glm::dvec3 beam_map(const Light& light, const glm::dvec3& x) {
   if (!inside_beam(light, x)) return glm::dvec3(0.0);
-  return has_gobo(light) ? gobo_colour(*light.gobo, beam_uv(light, x)) : glm::dvec3(1.0);
+  return has_gobo(light) ? gobo_color(*light.gobo, beam_uv(light, x)) : glm::dvec3(1.0);
 }
 
 }  // namespace

@@ -95,7 +95,7 @@ Json quaternion(const glm::dquat& q) { return {q.x, q.y, q.z, q.w}; }
 
 // ---- conversions ----
 
-TEST(GltfScene, PhotometricUnitsDivideBy683AndTheColourMultiplies) {
+TEST(GltfScene, PhotometricUnitsDivideBy683AndTheColorMultiplies) {
   Gltf g;
   const int point = g.light({{"type", "point"}, {"intensity", 683.0 * 4}, {"color", {1, 0.5, 0.25}}});
   const int sun = g.light({{"type", "directional"}, {"intensity", 683.0 * 2}});

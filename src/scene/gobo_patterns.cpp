@@ -38,22 +38,22 @@ constexpr glm::vec2 kRoseCentre(0.5f, 0.70f);
 constexpr float kRoseRadius = 0.24f, kEyeRadius = 0.08f;
 constexpr int kPetals = 8, kColumns = 4, kRows = 6;
 
-const glm::vec3 kLeadColour(0.0f);
-const glm::vec3& ruby() { return glass_colours[0]; }
-const glm::vec3& cobalt() { return glass_colours[1]; }
-const glm::vec3& amber() { return glass_colours[2]; }
+const glm::vec3 kLeadColor(0.0f);
+const glm::vec3& ruby() { return glass_colors[0]; }
+const glm::vec3& cobalt() { return glass_colors[1]; }
+const glm::vec3& amber() { return glass_colors[2]; }
 
 // Inside the rose, `d` from its centre: an amber eye and petals alternating
 // ruby and cobalt, held by two lead circles and radial spokes.
 glm::vec3 rose(glm::vec2 d) {
   const float r = glm::length(d);
-  if (std::fabs(r - kRoseRadius) < kLead || std::fabs(r - kEyeRadius) < kLead) return kLeadColour;
+  if (std::fabs(r - kRoseRadius) < kLead || std::fabs(r - kEyeRadius) < kLead) return kLeadColor;
   if (r < kEyeRadius) return amber();
   // The angle from the top, mirrored so that the two halves match.
   const float sector = glm::two_pi<float>() / kPetals;
   const float angle = std::atan2(std::fabs(d.x), d.y);
   const float off_spoke = std::fabs(angle - sector * std::round(angle / sector));
-  if (r * std::sin(off_spoke) < kLead) return kLeadColour;
+  if (r * std::sin(off_spoke) < kLead) return kLeadColor;
   return int(angle / sector) % 2 == 0 ? ruby() : cobalt();
 }
 
@@ -63,15 +63,15 @@ glm::vec3 pane(glm::vec2 uv) {
   const glm::vec2 span(1.0f - 2.0f * kFrame);
   const glm::vec2 cells = (uv - kFrame) / span * glm::vec2(kColumns, kRows);
   const glm::vec2 to_line = glm::abs(cells - glm::round(cells)) * span / glm::vec2(kColumns, kRows);
-  if (glm::min(to_line.x, to_line.y) < kLead) return kLeadColour;
+  if (glm::min(to_line.x, to_line.y) < kLead) return kLeadColor;
   const int column = std::clamp(int(cells.x), 0, kColumns - 1);
   const int row = std::clamp(int(cells.y), 0, kRows - 1);
   const int mirrored = std::min(column, kColumns - 1 - column);
-  return glass_colours[size_t(mirrored + row) % glass_colours.size()];
+  return glass_colors[size_t(mirrored + row) % glass_colors.size()];
 }
 
 glm::vec3 stained_glass_at(glm::vec2 uv) {
-  if (std::min({uv.x, uv.y, 1.0f - uv.x, 1.0f - uv.y}) < kFrame) return kLeadColour;
+  if (std::min({uv.x, uv.y, 1.0f - uv.x, 1.0f - uv.y}) < kFrame) return kLeadColor;
   const glm::vec2 d = uv - kRoseCentre;
   return glm::length(d) < kRoseRadius + kLead ? rose(d) : pane(uv);
 }

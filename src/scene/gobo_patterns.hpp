@@ -15,11 +15,11 @@ namespace airlight::scene_gobo {
 Image polka_dots(int size, int grid, float fill);
 
 // The transmittance of the glass panes (linear RGB): ruby, cobalt, amber, emerald.
-inline const std::array<glm::vec3, 4> glass_colours{
+inline const std::array<glm::vec3, 4> glass_colors{
     glm::vec3(0.80f, 0.04f, 0.06f), glm::vec3(0.06f, 0.18f, 0.85f),
     glm::vec3(0.95f, 0.55f, 0.06f), glm::vec3(0.06f, 0.65f, 0.20f)};
 
-// A stained-glass window filling the image: panes of glass_colours held by
+// A stained-glass window filling the image: panes of glass_colors held by
 // black lead lines and framed by a lead border, with a rose window (a ring of
 // eight petals around an amber eye) in its upper part. Symmetric left to right,
 // so it reads the same seen from either side. Antialiased by area.

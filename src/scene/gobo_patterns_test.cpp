@@ -8,7 +8,7 @@
 namespace airlight {
 namespace {
 
-using scene_gobo::glass_colours;
+using scene_gobo::glass_colors;
 
 bool in_unit_range(const Image& image) {
   for (const glm::vec3& p : image.pixels)
@@ -73,15 +73,15 @@ TEST(GoboPatterns, StainedGlassHasSaturatedPanesBetweenDarkLead) {
   const double lead = fraction_where(glass, dark);
   EXPECT_GT(lead, 0.12);
   EXPECT_LT(lead, 0.35);
-  for (const glm::vec3& colour : glass_colours) {
+  for (const glm::vec3& color : glass_colors) {
     const double share =
-        fraction_where(glass, [&](const glm::vec3& p) { return glm::length(p - colour) < 1e-4f; });
+        fraction_where(glass, [&](const glm::vec3& p) { return glm::length(p - color) < 1e-4f; });
     EXPECT_GT(share, 0.04) << "every glass colour is used";
   }
 }
 
-TEST(GoboPatterns, GlassColoursAreSaturated) {
-  for (const glm::vec3& c : glass_colours) {
+TEST(GoboPatterns, GlassColorsAreSaturated) {
+  for (const glm::vec3& c : glass_colors) {
     const float hi = std::max({c.r, c.g, c.b}), lo = std::min({c.r, c.g, c.b});
     EXPECT_GT(hi, 0.6f);
     EXPECT_LT(lo, 0.1f);

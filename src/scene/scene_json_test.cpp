@@ -343,8 +343,8 @@ const BadCase kWrongTypes[] = {
     {"LightNotObject", "/lights/0", "3", "lights[0]"},
     {"ObjectsNotArray", "/objects", R"("none")", "objects"},
     {"VolumesNotArray", "/volumes", "1", "volumes"},
-    {"ColourString", "/medium/scattering", R"("grey")", "medium.scattering"},
-    {"ColourPair", "/lights/0/intensity", "[1, 2]", "lights[0].intensity"},
+    {"ColorString", "/medium/scattering", R"("grey")", "medium.scattering"},
+    {"ColorPair", "/lights/0/intensity", "[1, 2]", "lights[0].intensity"},
     {"SegmentsFraction", "/objects/1/segments", "10.5", "objects[1].segments", "must be a whole number, got 10.5"},
     {"SegmentsTooFew", "/objects/1/segments", "3", "objects[1].segments", "must be in [4, 1024], got 3"},
     {"MeshPathNumber", "/objects/5/mesh", "1", "objects[5].mesh"},
@@ -359,7 +359,7 @@ const BadCase kBeyondFloatRange[] = {
     {"Bounded", "/camera/fov_y_deg", "1e39", "camera.fov_y_deg", "must be in (0, 180), got 1e+39"},
     {"VectorComponent", "/lights/0/position/0", "-1e300", "lights[0].position[0]",
      "too small, at least -3.40282e+38, got -1e+300"},
-    {"Colour", "/lights/1/intensity", "1e39", "lights[1].intensity", "too large, at most 3.40282e+38, got 1e+39"},
+    {"Color", "/lights/1/intensity", "1e39", "lights[1].intensity", "too large, at most 3.40282e+38, got 1e+39"},
     {"Ambient", "/ambient/1", "1e300", "ambient[1]", "too large, at most 3.40282e+38, got 1e+300"},
 };
 

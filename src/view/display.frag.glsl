@@ -11,7 +11,7 @@ uniform int pass;        // 0 composite, 1 airlight, 2 surface (airlight::Pass);
 uniform float exposure;
 uniform int curve;       // 0 agx, 1 aces, 2 clamp (airlight::ToneCurve)
 uniform vec4 viewport;  // x, y, width, height in window pixels
-out vec4 colour;
+out vec4 color;
 
 const float brightest = 1e6;  // every curve is flat long before; keeps ACES finite
 const float agx_min_ev = -12.47393, agx_max_ev = 4.026069;
@@ -58,9 +58,9 @@ void main() {
   vec2 uv = (gl_FragCoord.xy - viewport.xy) / viewport.zw;
   vec3 l_air = texture(airlight_image, uv).rgb, l_surf = texture(surface_image, uv).rgb;
   if (pass == 3) {
-    colour = vec4(l_air, 1.0);
+    color = vec4(l_air, 1.0);
     return;
   }
   vec3 radiance = pass == 1 ? l_air : pass == 2 ? l_surf : l_air + l_surf;
-  colour = vec4(tone_map(radiance), 1.0);
+  color = vec4(tone_map(radiance), 1.0);
 }

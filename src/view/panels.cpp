@@ -20,8 +20,8 @@ void edit_direction(const char* label, glm::vec3& direction) {
   if (ImGui::DragFloat3(label, &d.x, 0.01f, -1.0f, 1.0f) && glm::length(d) > 1e-3f) direction = glm::normalize(d);
 }
 
-bool edit_colour(const char* label, glm::vec3& colour, float speed) {
-  return ImGui::DragFloat3(label, &colour.x, speed, 0.0f, 1e9f, "%.4g", ImGuiSliderFlags_AlwaysClamp);
+bool edit_color(const char* label, glm::vec3& color, float speed) {
+  return ImGui::DragFloat3(label, &color.x, speed, 0.0f, 1e9f, "%.4g", ImGuiSliderFlags_AlwaysClamp);
 }
 
 }  // namespace
@@ -102,15 +102,15 @@ void Viewer::light_panel() {
     ImGui::SliderFloat("edge", &light.edge_deg, 0.0f, light.cone_deg, "%.1f deg");
   }
   if (light.type == LightType::directional)
-    edit_colour("irradiance", light.irradiance, 0.05f);
+    edit_color("irradiance", light.irradiance, 0.05f);
   else
-    edit_colour("intensity", light.intensity, 1.0f);
+    edit_color("intensity", light.intensity, 1.0f);
 }
 
 void Viewer::medium_panel() {
   Medium& m = inputs_.medium;
-  edit_colour("scattering", m.sigma_s, 0.001f);
-  edit_colour("absorption", m.sigma_a, 0.001f);
+  edit_color("scattering", m.sigma_s, 0.001f);
+  edit_color("absorption", m.sigma_a, 0.001f);
   for (size_t i = 0; i < m.phase.lobes.size(); ++i) {
     PhaseLobe& lobe = m.phase.lobes[i];
     ImGui::PushID(static_cast<int>(i));

@@ -74,7 +74,7 @@ MethodInfo analytic_method() {
           "Nilsson eq. 2.17), with F(u, v) from a table or integrated in the shader; no volumetric shadows "
           "(occluders only end the view ray), and the medium that fills space only: bounded volumes and gobo "
           "colours are ignored",
-          kit::gpu_settings(analytic_settings()), [](const Settings& s) { return std::make_unique<Analytic>(s); },
+          kit::gpu_settings(analytic_settings()), kit::create<Analytic>(),
           128, kit::gpu_memory(), {.volumetric_shadows = false, .bounded_volumes = false, .gobos = false},
           {{"exact", {}, Trial::Measure::worst_pixel, 0.02,
             "Sun et al.'s closed form against the reference without shadows, volumes or gobos: the same integral, evaluated in float "

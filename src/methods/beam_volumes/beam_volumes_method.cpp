@@ -3,6 +3,7 @@
 #include "methods/kit/counting/lit_interval_pass.hpp"
 #include "methods/kit/method/memory_needs.hpp"
 
+#include "gpu/growing_buffer.hpp"
 #include "gpu/program.hpp"
 #include "methods/kit/method/registry.hpp"
 
@@ -47,11 +48,7 @@ private:
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, zero);
     if (faces.empty()) return;
-    if (faces.size() > face_capacity_ || faces_.id() == 0) {
-      face_capacity_ = faces.size();
-      faces_ = gpu::make_buffer(face_capacity_ * sizeof(kit::CountedTriangle), nullptr);
-    }
-    glNamedBufferSubData(faces_.id(), 0, faces.size() * sizeof(kit::CountedTriangle), faces.data());
+    faces_.assign(faces);
     const gpu::Program& program = gpu::cached_program(
         {{GL_VERTEX_SHADER, "methods/kit/counting/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/beam_volumes/signed.frag.glsl"}},
         frame.defines() + kit::lit_interval_defines());
@@ -88,8 +85,7 @@ private:
   bool signed_;
   gpu::Framebuffer fbo_;
   gpu::VertexArray no_vertices_;
-  gpu::Buffer faces_;
-  size_t face_capacity_ = 0;
+  gpu::GrowingBuffer<kit::CountedTriangle> faces_;
 };
 
 // Per light, the beam tree over every caster triangle, its visible pieces and
@@ -124,7 +120,7 @@ MethodInfo beam_volumes_method() {
           "exact volumetric shadows from a beam tree per light (a BSP tree of planes through the light, any "
           "polygon order): the pyramids between the light and the polygons it sees first, backplate included, "
           "bound its lit region; per pixel the closed-form Γ summed over the lit intervals",
-          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<BeamVolumes>(s); },
+          kit::gpu_settings(std::move(own)), kit::create<BeamVolumes>(),
           224, kit::gpu_memory(beam_volumes_memory), {.caster_triangles = true},
           {{"exact", {"samples=512"}, Trial::Measure::worst_pixel, 0.02,
             "exact shadows from the beam trees of the casters' triangles and Γ in closed form (512 points per "

@@ -1,6 +1,7 @@
 #include "methods/beam_volumes/lit_pyramids.hpp"
 
 #include "methods/beam_volumes/pyramid_sides.hpp"
+#include "methods/kit/frame/model_of.hpp"
 #include "methods/kit/frame/view_reach.hpp"
 
 #include <algorithm>
@@ -53,7 +54,7 @@ void LitPyramids::prepare(const Scene& scene) {
 std::vector<geometry::BeamPolygon> LitPyramids::world_polygons(const FrameInputs& inputs) const {
   std::vector<geometry::BeamPolygon> polygons;
   for (const Caster& caster : casters_) {
-    const glm::dmat4 m = inputs.transforms.empty() ? glm::dmat4(1.0) : glm::dmat4(inputs.transforms[caster.mesh]);
+    const glm::dmat4 m = glm::dmat4(kit::model_of(inputs.transforms, caster.mesh));
     for (const glm::uvec3& t : caster.triangles) {
       geometry::BeamPolygon p;
       p.source = caster.mesh;

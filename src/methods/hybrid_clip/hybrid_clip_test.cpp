@@ -79,7 +79,7 @@ TEST(HybridClip, SamplingPlaneGivesThePlanesImage) {
 }
 
 // Lit sampling's pieces reach the whole slab: the regions are taken with half
-// a slab's margin (kit/slab_regions.hpp), so the image is still planes'. The
+// a slab's margin (kit/slab_pieces.hpp), so the image is still planes'. The
 // stage adds five spots with gobos and soft edges.
 TEST(HybridClip, LitSamplingGivesThePlanesImage) {
   for (const char* scene : {"nilsson_multiple", "nilsson_parallel", "stage"}) expect_planes_image(scene, {});

@@ -71,11 +71,11 @@ MethodInfo interleaved_method() {
           "raymarch with the N samples spread over M×M pixel blocks (interleaved sampling, Keller & "
           "Heidrich 2001) and gathered by a separable sum, normalized by each pixel's unshadowed ∫σs·I/r² and "
           "depth-aware by default",
-          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<Interleaved>(s); },
+          kit::gpu_settings(std::move(own)), kit::create<Interleaved>(),
           224, kit::gpu_memory(), {},
-          {{"high quality", {"steps=512", "shadow_resolution=2048"}, Trial::Measure::rel_rmse, 0.03,
-            "512 equiangular samples per light over 4×4 blocks and 2048² maps: the gather blurs only within a "
-            "block, guarded against silhouettes; 3 % is issue 25's bound for sampling methods at high quality"}}, {}};
+          {kit::high_quality_trial({"steps=512", "shadow_resolution=2048"},
+            "512 equiangular samples per light over 4×4 blocks and 2048² maps: the gather blurs only within "
+            "a block, guarded against silhouettes")}, {}};
 }
 
 }  // namespace

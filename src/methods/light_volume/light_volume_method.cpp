@@ -61,7 +61,7 @@ MethodInfo light_volume_method() {
           "exact volumetric shadows up to the shadow map's resolution: each light's map made a closed mesh of its "
           "lit region on the GPU every frame, the mesh's crossings with each pixel's ray counted into lit "
           "intervals, the closed-form Γ summed over them; nothing marched, no cost per caster triangle",
-          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<LightVolume>(s); },
+          kit::gpu_settings(std::move(own)), kit::create<LightVolume>(),
           224, kit::gpu_memory(light_volume_memory), {},
           {{"grid at the map's resolution",
             {"shadow_resolution=256", "volume_resolution=256", "samples=512"},

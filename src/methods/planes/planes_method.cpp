@@ -1,8 +1,6 @@
 #include "methods/kit/planes/plane_method.hpp"
 #include "methods/kit/method/registry.hpp"
 
-#include <memory>
-
 namespace airlight::methods {
 namespace {
 
@@ -13,11 +11,11 @@ MethodInfo planes_method() {
           "I(θ,φ)·ξ·V·Δt (light map, ξ per fragment or on a lattice mesh, shadow-map test) by additive blending "
           "into a float target",
           kit::gpu_settings(kit::plane_settings()),
-          [](const Settings& s) { return std::make_unique<kit::PlaneMethod>(s, kit::PlaneRegions::none); },
+          kit::create<kit::PlaneMethod>(kit::PlaneCut::none),
           160, kit::gpu_memory(), {},
-          {{"high quality", {"planes=1024", "shadow_resolution=2048"}, Trial::Measure::rel_rmse, 0.03,
-            "1024 planes per light through its lit region and 2048² maps: the slabs' sampling is what is left; 3 % "
-            "is issue 25's bound for sampling methods at high quality"}}, {}};
+          {kit::high_quality_trial({"planes=1024", "shadow_resolution=2048"},
+            "1024 planes per light through its lit region and 2048² maps: the slabs' sampling is what is "
+            "left")}, {}};
 }
 
 }  // namespace

@@ -34,11 +34,11 @@ MethodInfo raymarch_method() {
           "visibility, samples at the middle of each step or jittered by a noise texture, in even steps "
           "or equiangular about each point and spot light",
           kit::gpu_settings(kit::march_settings()),
-          [](const Settings& s) { return std::make_unique<Raymarch>(s); },
+          kit::create<Raymarch>(),
           160, kit::gpu_memory(), {},
-          {{"high quality", {"steps=512", "shadow_resolution=2048"}, Trial::Measure::rel_rmse, 0.03,
-            "512 equiangular steps per light and 2048² maps: at 32×24 a pixel spans many texels, so what is left is "
-            "the sampling along the ray; 3 % is issue 25's bound for sampling methods at high quality"}}, {}};
+          {kit::high_quality_trial({"steps=512", "shadow_resolution=2048"},
+            "512 equiangular steps per light and 2048² maps: at 32×24 a pixel spans many texels, so what is "
+            "left is the sampling along the ray")}, {}};
 }
 
 }  // namespace

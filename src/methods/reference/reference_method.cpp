@@ -53,7 +53,7 @@ MethodInfo reference_method() {
           {{"rel_tol", T::real, 1e-3, 1e-7, 0.1, {}, "relative accuracy of each pixel's airlight integral"},
            {"min_segments", T::integer, 128, 1, 4096, {},
             "initial panels per ray: shadow features thinner than 1/min_segments of the ray may be missed"}},
-          [](const Settings& s) { return std::make_unique<ReferenceMethod>(s); },
+          kit::create<ReferenceMethod>(),
           80, reference_memory, {.engine_maps = false, .ground_truth = true}, {}, {}};
 }
 

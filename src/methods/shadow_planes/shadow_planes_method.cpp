@@ -71,7 +71,7 @@ MethodInfo shadow_planes_method() {
           "summed, piece by piece through bounded volumes (Biri §5.2); gobos and the light's leg through other "
           "volumes by a sampled ratio",
           kit::gpu_settings(std::move(own)),
-          [](const Settings& s) { return std::make_unique<ShadowPlanes>(s); },
+          kit::create<ShadowPlanes>(),
           224, kit::gpu_memory(shadow_planes_memory), {.caster_triangles = true},
           {{"exact", {"samples=512"}, Trial::Measure::worst_pixel, 0.02,
             "exact shadows from the casters' own triangles and Γ in closed form (512 points per interval where "

@@ -1,6 +1,7 @@
 #include "methods/shadow_planes/silhouettes.hpp"
 
 #include "geometry/camera.hpp"
+#include "methods/kit/frame/model_of.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -22,7 +23,7 @@ void Silhouettes::prepare(const Scene& scene) {
 
 void Silhouettes::move_casters(const FrameInputs& inputs) {
   for (Caster& c : casters_) {
-    const glm::mat4 m = inputs.transforms.empty() ? glm::mat4(1.0f) : inputs.transforms[c.mesh];
+    const glm::mat4 m = kit::model_of(inputs.transforms, c.mesh);
     c.world.resize(c.topology.positions.size());
     std::transform(c.topology.positions.begin(), c.topology.positions.end(), c.world.begin(),
                    [&m](const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); });

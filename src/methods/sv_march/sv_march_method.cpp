@@ -115,14 +115,13 @@ MethodInfo sv_march_method() {
           "ray marching only where shadows can change: each light's shadow map made a conservative shell mesh "
           "on the GPU every frame, each pixel's ray marched with shadow-map lookups (raymarch's steps, sampling "
           "and jitter) only between its first and last crossing with it, the closed-form Γ before and after",
-          kit::gpu_settings(std::move(own)), [](const Settings& s) { return std::make_unique<SvMarch>(s); },
+          kit::gpu_settings(std::move(own)), kit::create<SvMarch>(),
           176, kit::gpu_memory(sv_march_memory), {},
-          {{"high quality", {"steps=512", "samples=256", "shadow_resolution=2048"}, Trial::Measure::rel_rmse, 0.03,
-            "512 steps per light inside the shells, closed form outside them with 256 samples of its correction (a "
-            "light's leg through a dense volume, random scene 13, was 3.8 % off at 64, 0.3 % at 256; at 512 "
-            "llvmpipe's loop limit cuts the exact parts short, seed 31: docs/decisions.md), 2048² maps: the "
-            "sampling within the shells is what is left; 3 % is issue 25's bound for sampling methods at high "
-            "quality"}}, {}};
+          {kit::high_quality_trial({"steps=512", "samples=256", "shadow_resolution=2048"},
+            "512 steps per light inside the shells, closed form outside them with 256 samples of its "
+            "correction (a light's leg through a dense volume, random scene 13, was 3.8 % off at 64, 0.3 % "
+            "at 256; at 512 llvmpipe's loop limit cuts the exact parts short, seed 31: docs/decisions.md), "
+            "2048² maps: the sampling within the shells is what is left")}, {}};
 }
 
 }  // namespace

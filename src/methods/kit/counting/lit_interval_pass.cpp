@@ -5,124 +5,14 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <limits>
-#include <numeric>
-#include <glm/geometric.hpp>
 
 namespace airlight::kit {
 namespace {
 
-constexpr GLuint counted_binding = binding::first_free_storage;
-constexpr GLuint nodes_binding = counted_binding + 1;
-constexpr GLuint node_count_binding = counted_binding + 2;
-constexpr GLuint kept_binding = counted_binding + 3, kept_draw_binding = counted_binding + 4;  // CountedDraw's
 constexpr GLuint end_of_list = 0xffffffffu;
 constexpr size_t node_bytes = 3 * sizeof(GLuint);
 
-// A homogeneous point as a finite one and a direction: (p, 1) → p; (d, 0) → d.
-glm::dvec3 finite(const glm::dvec4& p) { return glm::dvec3(p); }
-
-// counted_plane's unit normal in double (0 for a degenerate triangle).
-glm::dvec3 counted_normal(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c) {
-  // With one corner at infinity its direction spans the plane with the finite edge.
-  glm::dvec3 n;
-  if (c.w == 0.0) n = glm::cross(finite(b) - finite(a), finite(c));
-  else if (b.w == 0.0) n = glm::cross(finite(b), finite(c) - finite(a));
-  else if (a.w == 0.0) n = glm::cross(finite(c) - finite(b), finite(a));
-  else n = glm::cross(finite(b) - finite(a), finite(c) - finite(a));
-  const double length = glm::length(n);
-  return length > 0.0 ? n / length : n;
-}
-
-// Where p, on the plane of triangle c, lies: its least distance inside the
-// triangle's edges (negative outside), a corner at infinity standing as a
-// point `far` along its direction from a finite corner.
-double inside_by(const CountedTriangle& c, const glm::dvec3& p, double far) {
-  const glm::dvec4 first(c.corners[c.corners[0].w != 0.0f ? 0 : 1]);
-  glm::dvec3 q[3];
-  for (int k = 0; k < 3; ++k) {
-    const glm::dvec4 corner(c.corners[k]);
-    q[k] = corner.w != 0.0 ? finite(corner) : finite(first) + far * glm::normalize(finite(corner));
-  }
-  const glm::dvec3 m = glm::cross(q[1] - q[0], q[2] - q[0]);
-  double least = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    const glm::dvec3 inward = glm::cross(m, q[(k + 1) % 3] - q[k]);
-    const double length = glm::length(inward);
-    if (!(length > 0.0)) return -std::numeric_limits<double>::infinity();
-    least = std::min(least, glm::dot(p - q[k], inward) / length);
-  }
-  return least;
-}
-
 }  // namespace
-
-glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c) {
-  const glm::dvec3 unit = counted_normal(a, b, c);
-  const glm::dvec3 point = finite(a.w != 0.0 ? a : b);
-  return glm::vec4(glm::vec3(unit), static_cast<float>(glm::dot(unit, point)));
-}
-
-std::vector<EyePlane> take_planes_at_eye(std::vector<CountedTriangle>& triangles, size_t first, int light,
-                                         const Light& source, const glm::dvec3& eye, size_t room, glm::dvec3& beside) {
-  const bool directional = source.type == LightType::directional;
-  struct AtEye {
-    size_t index;
-    glm::dvec3 normal;
-  };
-  std::vector<AtEye> found;
-  std::vector<size_t> edge_on;  // through the eye, the eye outside them: a ray from it never crosses them
-  double scale = 0.0;           // the largest magnitude among those found
-  for (size_t i = first; i < triangles.size(); ++i) {
-    const CountedTriangle& c = triangles[i];
-    if (c.light_weight.x != light || c.light_weight.y == 0) continue;
-    // In double, oriented as the plane the GPU counts by (its method may have built it otherwise).
-    glm::dvec3 n = counted_normal(glm::dvec4(c.corners[0]), glm::dvec4(c.corners[1]), glm::dvec4(c.corners[2]));
-    if (glm::dot(n, glm::dvec3(c.plane)) < 0.0) n = -n;
-    double magnitude = std::max(glm::length(eye), directional ? 0.0 : glm::length(glm::dvec3(source.position)));
-    for (const glm::vec4& corner : c.corners)
-      if (corner.w != 0.0f) magnitude = std::max(magnitude, glm::length(glm::dvec3(corner)));
-    const glm::dvec3 on_plane(c.corners[c.corners[0].w != 0.0f ? 0 : 1]);
-    const double distance = glm::dot(n, eye - on_plane), tolerance = 1e-5 * magnitude;
-    // Shadow boundaries only, planes along the light's rays: a plane through the
-    // eye that is not (a caster's own face) is the eye on a surface, which the
-    // crossing test decides exactly (crossings.vert.glsl); on a box's edge the eye
-    // lies on two such planes at once (random scene 24).
-    const double off_light = directional ? std::abs(glm::dot(n, glm::dvec3(source.direction)))
-                                         : std::abs(glm::dot(n, glm::dvec3(source.position) - on_plane)) / magnitude;
-    if (!(glm::length(n) > 0.0 && std::abs(distance) <= tolerance && off_light <= 1e-5)) continue;
-    // On an edge (random scene 24: the eye on a box's edge, on two faces' planes
-    // at once), which side a ray takes depends on more than this plane: drawn.
-    const double inside = inside_by(c, eye - distance * n, 1e6 * magnitude);
-    if (inside < -tolerance) edge_on.push_back(i);
-    if (inside > tolerance) found.push_back({i, n});
-    if (std::abs(inside) > tolerance) scale = std::max(scale, magnitude);
-  }
-  if (found.size() > room) return {};
-  const auto take_out = [&] {
-    for (const AtEye& f : found) triangles[f.index].light_weight.y = 0;
-    for (const size_t i : edge_on) triangles[i].light_weight.y = 0;
-  };
-  if (found.empty()) {
-    take_out();
-    return {};
-  }
-  // Off the eye against the normals' sum, twice the planes' tolerance: on the
-  // negative side of each (checked), and inside them still.
-  glm::dvec3 away(0.0);
-  for (const AtEye& f : found) away -= f.normal;
-  if (!(glm::length(away) > 0.5)) return {};
-  beside = eye + 2e-5 * scale * glm::normalize(away);
-  std::vector<EyePlane> planes;
-  for (const AtEye& f : found) {
-    CountedTriangle& c = triangles[f.index];
-    const glm::dvec3 on_plane(c.corners[c.corners[0].w != 0.0f ? 0 : 1]);
-    if (!(glm::dot(f.normal, beside - on_plane) < 0.0)) return {};
-    planes.push_back({glm::vec3(f.normal), light, c.light_weight.y});
-  }
-  take_out();
-  return planes;
-}
 
 SettingSpec gamma_samples_setting() {
   return {"samples", SettingSpec::Type::integer, 64, 1, 1024, {},
@@ -151,106 +41,13 @@ std::vector<MemoryNeed> crossing_pool_needs(const Settings& settings, int width,
            double(width) * height * capacity * node_bytes}};
 }
 
-MemoryNeed counted_triangle_need(const std::string& what, double count) {
-  const double buffer = count * sizeof(CountedTriangle);
-  return {"", what, 2.0 * buffer + count * sizeof(GLuint), buffer};  // and the kept indices (CountedDraw)
-}
-
 LitIntervalPass::LitIntervalPass(const Settings& s)
     : capacity_per_pixel_(s.real("capacity")), samples_(s.integer("samples")) {}
-
-void CountedDraw::prepare() {
-  fbo_ = gpu::make_framebuffer();
-  no_vertices_ = gpu::make_vertex_array();  // the triangles come from their buffer by gl_VertexID
-  kept_draw_ = gpu::make_buffer(4 * sizeof(GLuint), nullptr);
-  kept_capacity_ = 0;
-  // A storage binding holds at most GL_MAX_SHADER_STORAGE_BLOCK_SIZE bytes
-  // (128 MiB on llvmpipe: 1.68 M triangles); larger sets are drawn in ranges
-  // whose offsets keep the binding's alignment.
-  GLint64 block = 0;
-  GLint align = 16;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
-  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
-  const size_t step = static_cast<size_t>(align) / std::gcd(static_cast<size_t>(align), sizeof(CountedTriangle));
-  range_triangles_ = std::max<size_t>(static_cast<size_t>(block) / sizeof(CountedTriangle) / step * step, step);
-  if (epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
-    GLuint id = 0;
-    glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
-    invocations_ = gpu::Query(id);
-  }
-}
-
-// The bound range's triangles that may cross a pixel's ray, into kept_ and the
-// indirect draw's count (cull_counted.comp.glsl).
-void CountedDraw::keep_crossing(const SceneFrame& frame, size_t n) {
-  if (n > kept_capacity_) {
-    kept_capacity_ = n;
-    kept_ = gpu::make_buffer(n * sizeof(GLuint), nullptr);
-  }
-  const GLuint command[4] = {0, 1, 0, 0};  // vertex count, instances, first vertex, base instance
-  glNamedBufferSubData(kept_draw_.id(), 0, sizeof(command), command);
-  const gpu::Program& cull =
-      gpu::cached_compute_program("methods/kit/counting/cull_counted.comp.glsl", frame.defines() + lit_interval_defines());
-  glUseProgram(cull.id());
-  gpu::set_uniform(cull, "item_count", static_cast<int>(n));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kept_binding, kept_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kept_draw_binding, kept_draw_.id());
-  const GLuint groups = static_cast<GLuint>((n + 63) / 64), x = std::min<GLuint>(groups, 65535u);
-  glDispatchCompute(x, (groups + x - 1) / x, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, kept_draw_.id());
-}
-
-double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, const gpu::Buffer& triangles,
-                         size_t count) {
-  if (count == 0) return 0.0;
-  if (frame.width() != width_ || frame.height() != height_) {
-    width_ = frame.width();
-    height_ = frame.height();
-    glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width_);
-    glNamedFramebufferParameteri(fbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height_);
-  }
-  glUseProgram(program.id());
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glViewport(0, 0, width_, height_);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  glEnable(GL_DEPTH_CLAMP);
-  glBindVertexArray(no_vertices_.id());
-  if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
-  for (size_t first = 0; first < count; first += range_triangles_) {
-    const size_t n = std::min(range_triangles_, count - first);
-    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles.id(),
-                      static_cast<GLintptr>(first * sizeof(CountedTriangle)),
-                      static_cast<GLsizeiptr>(n * sizeof(CountedTriangle)));
-    keep_crossing(frame, n);
-    glUseProgram(program.id());
-    glDrawArraysIndirect(GL_TRIANGLES, nullptr);
-  }
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-  GLuint64 fragments = 0;
-  if (invocations_) {
-    glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-    glGetQueryObjectui64v(invocations_.id(), GL_QUERY_RESULT, &fragments);
-  }
-  glDisable(GL_DEPTH_CLAMP);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  return static_cast<double>(fragments);
-}
 
 void LitIntervalPass::prepare() {
   counted_draw_.prepare();
   loop_limit_ = gpu::software_renderer();
   node_count_ = gpu::make_buffer(4 * sizeof(GLuint), nullptr);  // CountBlock
-}
-
-std::string lit_interval_defines() {
-  return "#define BINDING_COUNTED " + std::to_string(counted_binding) + "\n#define BINDING_NODES " +
-         std::to_string(nodes_binding) + "\n#define BINDING_NODE_COUNT " + std::to_string(node_count_binding) +
-         "\n#define BINDING_KEPT " + std::to_string(kept_binding) + "\n#define BINDING_KEPT_DRAW " +
-         std::to_string(kept_draw_binding) + "\n";
 }
 
 std::string LitIntervalPass::defines() const {
@@ -268,13 +65,8 @@ void LitIntervalPass::run(const SceneFrame& frame, const std::vector<CountedTria
                           const EyeCounts& eye, const gpu::Texture& target, gpu::PassTimer& timer) {
   {
     gpu::ScopedPass pass(timer, "crossings");
-    if (triangles.size() > triangle_capacity_ || triangles_.id() == 0) {
-      triangle_capacity_ = std::max<size_t>(triangles.size(), 1);
-      triangles_ = gpu::make_buffer(triangle_capacity_ * sizeof(CountedTriangle), nullptr);
-    }
-    if (!triangles.empty())
-      glNamedBufferSubData(triangles_.id(), 0, triangles.size() * sizeof(CountedTriangle), triangles.data());
-    list_crossings(frame, triangles_, triangles.size());
+    triangles_.assign(triangles);
+    list_crossings(frame, triangles_.buffer(), triangles.size());
   }
   gpu::ScopedPass pass(timer, "airlight");
   resolve(frame, eye, target);

@@ -41,7 +41,7 @@ void check_engine_frame(const EngineFrame& engine, const FrameInputs& inputs) {
       check_size(texture, what, inputs.width, inputs.height);
       image_format(texture, what);
     }
-  if (t.colour) check_size(t.colour, "colour", inputs.width, inputs.height);
+  if (t.color) check_size(t.color, "colour", inputs.width, inputs.height);
   // The surface term is shaded from airlight's own G-buffer, which an engine's depth replaces.
   if (t.surface && (engine.depth || !inputs.surface))
     throw InputError("EngineTarget", "surface", "needs FrameInputs::surface and no EngineFrame::depth");
@@ -74,9 +74,9 @@ void write_engine_target(const EngineTarget& target, const SceneFrame& frame, co
     glBindImageTexture(1, texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, format.gl);
     gpu::dispatch_pixels(frame.width(), frame.height());
   }
-  if (!target.colour) return;
+  if (!target.color) return;
   const gpu::Framebuffer fbo = gpu::make_framebuffer();
-  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.colour, 0);
+  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.color, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
   glViewport(0, 0, frame.width(), frame.height());
   glEnable(GL_BLEND);

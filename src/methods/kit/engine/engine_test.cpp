@@ -176,14 +176,14 @@ EngineImages engine_frame(Method& method, const Scene& scene, const gpu::Texture
                           const std::vector<std::optional<EngineShadow>>& shadows) {
   const gpu::Texture airlight = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width, height);
   const gpu::Texture transmittance = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA16F, width, height);
-  const gpu::Texture colour = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA16F, width, height);
-  glClearTexImage(colour.id(), 0, GL_RGBA, GL_FLOAT, engine_surface);
+  const gpu::Texture color = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA16F, width, height);
+  glClearTexImage(color.id(), 0, GL_RGBA, GL_FLOAT, engine_surface);
   EngineFrame engine;
   engine.depth = EngineDepth{depth.id(), cam.view, cam.projection, DepthRange::zero_to_one};
   engine.shadows = shadows;
-  engine.target = {airlight.id(), transmittance.id(), colour.id()};
+  engine.target = {airlight.id(), transmittance.id(), color.id()};
   method.render_frame(frame_inputs(scene, width, height), engine);
-  return {read_texture(airlight.id()), read_texture(transmittance.id()), read_texture(colour.id())};
+  return {read_texture(airlight.id()), read_texture(transmittance.id()), read_texture(color.id())};
 }
 
 class Engine : public ::testing::TestWithParam<const char*> {};
@@ -258,9 +258,9 @@ TEST(EngineState, CallersStateIsRestored) {
   gpu::Context& context = gpu::Context::headless();
   const Scene scene = builtin_scene("teapot_spot");
   auto method = prepared(scene);
-  const gpu::Texture colour = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA16F, width, height);
+  const gpu::Texture color = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA16F, width, height);
   const gpu::Framebuffer fbo = gpu::make_framebuffer();
-  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
+  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
   const gpu::VertexArray vao = gpu::make_vertex_array();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
   glBindVertexArray(vao.id());
@@ -275,7 +275,7 @@ TEST(EngineState, CallersStateIsRestored) {
   glActiveTexture(GL_TEXTURE3);
 
   EngineFrame engine;
-  engine.target.colour = colour.id();
+  engine.target.color = color.id();
   method->render_frame(frame_inputs(scene, width, height), engine);
 
   GLint value = 0, viewport[4] = {};

@@ -168,7 +168,7 @@ struct Arrival {
 ivec2 gobo_size(int i) { return ivec2(LIGHT(i).gobo_size >> 16, LIGHT(i).gobo_size & 0xffff); }
 
 // The gobo colour of light i at uv (1 without a gobo; black outside [0, 1]²).
-vec3 gobo_colour(int i, vec2 uv) {
+vec3 gobo_color(int i, vec2 uv) {
   return light_gobos[i] ? sample_gobo(gobo_maps, float(LIGHT(i).gobo_layer), gobo_size(i), uv) : vec3(1.0);
 }
 
@@ -183,11 +183,11 @@ vec3 light_map(int i, vec3 x) {
     float cone = spot_cone(axis, LIGHT(i).cone, light_edges[i] ? LIGHT(i).edge : 0.0, dir);  // a constant 0: the hard cut alone
     if (cone == 0.0) return vec3(0.0);
     vec2 uv = gobo_uv(axis, LIGHT(i).gobo_right, LIGHT(i).gobo_up, LIGHT(i).tan_cone, dir);
-    return cone * gobo_colour(i, uv);
+    return cone * gobo_color(i, uv);
   }
   if (!has_beam(i)) return vec3(1.0);
   Beam b = light_beam(i);
-  return inside_beam(b, x) ? gobo_colour(i, beam_uv(b, x)) : vec3(0.0);
+  return inside_beam(b, x) ? gobo_color(i, beam_uv(b, x)) : vec3(0.0);
 }
 
 // optics::arrival without the light map: intensity/falloff toward x (point,

@@ -3,6 +3,7 @@
 #include "gpu/context.hpp"
 #include "gpu/program.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
+#include "methods/kit/frame/shadows/shadow_projection.hpp"
 
 #include "geometry/camera.hpp"
 #include "reference/reference.hpp"

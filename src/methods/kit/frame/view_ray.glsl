@@ -29,7 +29,7 @@ vec2 ndc_of(vec3 offset) {
 vec2 window_of(vec3 offset) { return (ndc_of(offset) + 1.0) * 0.5 * frame.size; }
 
 // The clip-space position of the point at view depth z through `ndc`, as
-// frame.view_projection maps it (glm::frustum, scene_frame.cpp), computed
+// frame.view_projection maps it (glm::frustum, kit/frame/uploads.cpp), computed
 // without world coordinates: eye + z·ray rounds to the eye's ulp, and a plane
 // rasterized just past a near plane of 0.1 mm, 1 m from the origin, fell in
 // front of it and was clipped (random scene 75: planes 13 % dark).

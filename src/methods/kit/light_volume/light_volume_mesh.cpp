@@ -10,7 +10,6 @@
 
 #include <airlight/error.hpp>
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <string>
@@ -98,15 +97,10 @@ void LightVolumeMesh::prepare() {
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
   max_records_ = static_cast<GLsizei>(std::max<GLint64>((block - align) / record_bytes, 1));
-  wall_clock_ = gpu::software_renderer();
-  if (!wall_clock_) {
-    started_ = gpu::make_query(GL_TIMESTAMP);
-    finished_ = gpu::make_query(GL_TIMESTAMP);
-  }
-  eye_capacity_ = 0;
   vertex_grid_ = vertex_layers_ = 0;
-  triangle_capacity_ = 0;
-  triangles_ = gpu::make_buffer(record_bytes, nullptr);
+  eye_counts_.release();
+  triangles_.release();
+  triangles_.reserve(0);  // a buffer to bind before the first build
 }
 
 void LightVolumeMesh::allocate(int grid, int layers, GLsizei triangles, int lights) {
@@ -122,24 +116,12 @@ void LightVolumeMesh::allocate(int grid, int layers, GLsizei triangles, int ligh
     cell_low_ = gpu::make_texture(GL_TEXTURE_2D_ARRAY, GL_R32UI, grid, grid, vertex_layers_);
     cell_high_ = gpu::make_texture(GL_TEXTURE_2D_ARRAY, GL_R32UI, grid, grid, vertex_layers_);
   }
-  if (triangles > triangle_capacity_) {
-    triangle_capacity_ = triangles;
-    triangles_ = gpu::make_buffer(static_cast<size_t>(triangles) * record_bytes, nullptr);
-  }
-  if (lights > eye_capacity_ || !eye_counts_) {
-    eye_capacity_ = std::max(lights, 1);
-    eye_counts_ = gpu::make_buffer(static_cast<size_t>(eye_capacity_) * sizeof(GLint), nullptr);
-  }
+  triangles_.reserve(static_cast<size_t>(triangles));
+  eye_counts_.reserve(static_cast<size_t>(lights));
 }
 
 void LightVolumeMesh::build(const SceneFrame& frame) {
-  auto start = std::chrono::steady_clock::now();
-  if (wall_clock_) {
-    glFinish();
-    start = std::chrono::steady_clock::now();
-  } else {
-    glQueryCounter(started_.id(), GL_TIMESTAMP);
-  }
+  gpu::ScopedPass pass(timer_.emplace(), "volume");
   frame.bind();
   const int lights = frame.light_count();
   const std::vector<int> types = defined_ints(frame.defines(), "LIGHT_TYPES", lights);
@@ -182,13 +164,6 @@ void LightVolumeMesh::build(const SceneFrame& frame) {
   for (int i = 0; i < lights; ++i)
     if (ranges_[static_cast<size_t>(i)].kind != Kind::none) build_light(i, ranges_[static_cast<size_t>(i)].kind, frame);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
-  if (wall_clock_) {
-    glFinish();
-    wall_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  } else {
-    glQueryCounter(finished_.id(), GL_TIMESTAMP);
-  }
-  built_ = true;
 }
 
 void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame) {
@@ -295,11 +270,9 @@ std::vector<CountedTriangle> LightVolumeMesh::read_back() const {
 }
 
 double LightVolumeMesh::seconds() const {
-  if (wall_clock_ || !built_) return wall_seconds_;
-  GLuint64 begin = 0, end = 0;
-  glGetQueryObjectui64v(started_.id(), GL_QUERY_RESULT, &begin);  // waits for the GPU
-  glGetQueryObjectui64v(finished_.id(), GL_QUERY_RESULT, &end);
-  return static_cast<double>(end - begin) * 1e-9;
+  if (timer_)
+    for (const PassTime& t : timer_->results()) seconds_ = t.seconds;  // the build's one pass, once: results() empties the timer
+  return seconds_;
 }
 
 namespace {

@@ -81,11 +81,13 @@
 // two walls, per border segment three sides), a cube 36R² + 48R (two records
 // per face border segment for the walls across its edges), a directional
 // light 6R² + 20R + 14; a shell 4R² + 8R, 24R² and 4R² + 8R.
-#include "gpu/gl.hpp"
+#include "gpu/growing_buffer.hpp"
+#include "gpu/timer.hpp"
 #include "methods/kit/counting/lit_interval_pass.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
 
 #include <airlight/settings.hpp>
+#include <optional>
 #include <vector>
 
 namespace airlight::kit {
@@ -111,14 +113,14 @@ public:
   // storage bindings from binding::first_free_storage bound to its own objects.
   void build(const SceneFrame& frame);
 
-  const gpu::Buffer& triangles() const { return triangles_; }
+  const gpu::Buffer& triangles() const { return triangles_.buffer(); }
   GLsizei triangle_count() const { return triangle_count_; }  // this frame's, all lights
   // Per light: 0 if the frame's eye is inside its lit volume, 1 if not (read
   // from the GPU, where the eye's cell of the mesh decides it).
   std::vector<int> eye_counts() const;
-  const gpu::Buffer& eye_count_buffer() const { return eye_counts_; }  // the same on the GPU: one int per light
+  const gpu::Buffer& eye_count_buffer() const { return eye_counts_.buffer(); }  // the same on the GPU: one int per light
   std::vector<CountedTriangle> read_back() const;  // for tests and reports
-  double seconds() const;  // the last build's GPU time (glFinish-bracketed on llvmpipe, else timestamps)
+  double seconds() const;  // the last build's GPU time (gpu::PassTimer's)
 
   // Each light's records are [first, first + count) of triangles().
   struct LightRange {
@@ -137,15 +139,17 @@ private:
   Depth depth_;
   int grid_ = 0, map_size_ = 0;
   int clamped_to_ = 0;  // the map size the last clamping warning named
-  GLsizei triangle_count_ = 0, triangle_capacity_ = 0, max_records_ = 0;
+  GLsizei triangle_count_ = 0, max_records_ = 0;
   std::vector<LightRange> ranges_;
   gpu::Texture vertices_, cell_low_, cell_high_;
   int vertex_grid_ = 0, vertex_layers_ = 0;
-  gpu::Buffer triangles_, extras_, eye_counts_;
-  int eye_capacity_ = 0;
-  bool wall_clock_ = true, built_ = false;
-  gpu::Query started_, finished_;
-  double wall_seconds_ = 0.0;
+  gpu::GrowingBuffer<CountedTriangle> triangles_;
+  gpu::GrowingBuffer<GLint> eye_counts_;
+  gpu::Buffer extras_;
+  // The last build's, made with it (a timer needs the context); read when
+  // asked, as reading waits for the GPU.
+  mutable std::optional<gpu::PassTimer> timer_;
+  mutable double seconds_ = 0.0;
 };
 
 // What the meshes of the scene's lights take at the settings' grid

@@ -1,6 +1,7 @@
 #pragma once
-// The march pass shared by raymarch and interleaved (march.comp.glsl): its
-// settings, its program and noise texture, and its dispatches.
+// The march pass of raymarch, interleaved (march.comp.glsl) and sv_march (its
+// own program over march_pass.glsl): its settings, its program and noise
+// texture, and its dispatches.
 #include "methods/kit/sampling/noise.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
 
@@ -10,7 +11,7 @@
 
 namespace airlight::kit {
 
-// steps, jitter and sampling: the march's settings, common to both methods.
+// steps, jitter and sampling: the march's settings, common to its methods.
 std::vector<SettingSpec> march_settings();
 
 // The `sampling` setting: where the steps go (march.glsl's SAMPLING_*).

@@ -5,11 +5,26 @@
 // (the order of docs/design.md §3). Nothing outside the folder names it.
 #include <airlight/method.hpp>
 
+#include <memory>
+#include <string>
+#include <vector>
+
 namespace airlight::kit {
 
 struct Registration {
   Registration(int order, MethodInfo (*info)());
 };
+
+// MethodInfo::create of a method made from its settings and `args`:
+// create<Raymarch>(), create<PlaneMethod>(PlaneCut::gamma).
+template <class M, class... Args>
+auto create(Args... args) {
+  return [args...](const Settings& s) -> std::unique_ptr<Method> { return std::make_unique<M>(s, args...); };
+}
+
+// A sampling method's "high quality" trial: its rRMSE at `settings` over its
+// defaults within issue 25's 3 %, `left` saying what error those settings leave.
+Trial high_quality_trial(std::vector<std::string> settings, const std::string& left);
 
 }  // namespace airlight::kit
 

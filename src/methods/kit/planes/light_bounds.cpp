@@ -148,7 +148,7 @@ double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& cam
 
 namespace airlight::kit {
 
-void LitRegions::prepare(const Scene& scene) {
+void FrameLightBounds::prepare(const Scene& scene) {
   scene_ = scene;
   rays_.reset();
   transforms_.clear();
@@ -156,7 +156,7 @@ void LitRegions::prepare(const Scene& scene) {
   bounds_.clear();
 }
 
-void LitRegions::update(const FrameInputs& inputs) {
+void FrameLightBounds::update(const FrameInputs& inputs) {
   const auto start = std::chrono::steady_clock::now();
   const bool moved = !rays_ || inputs.transforms != transforms_;
   if (moved) {

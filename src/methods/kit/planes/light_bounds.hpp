@@ -42,11 +42,13 @@ LightBounds light_bounds(const Light& light, const reference::RayCaster& rays);
 double lit_far_depth(const LightBounds& volume, const geometry::CameraBasis& camera, double far);
 
 // Every light's bounds as the frames go by (docs/design.md §3: what a method
-// rebuilds per frame). A light whose position, direction, cone, beam or gobo
-// changed is traced again; when an object moves, the ray caster is rebuilt on
-// the posed scene and every light is traced again. Nothing is redone for a
-// frame that only moves the camera or changes colours and the medium.
-class LitRegions {
+// rebuilds per frame). A light whose position, direction, cone, beam or
+// gobo_up (which turns its grid of rays) changed is traced again — not one
+// whose gobo image changed, which the rays do not see; when an object moves,
+// the ray caster is rebuilt on the posed scene and every light is traced
+// again. Nothing is redone for a frame that only moves the camera or changes
+// colours and the medium.
+class FrameLightBounds {
 public:
   void prepare(const Scene& scene);
   void update(const FrameInputs& inputs);

@@ -1,6 +1,6 @@
 #pragma once
 // A method that is the plane pass alone (plane_pass.hpp): planes (Dobashi 2000)
-// and Nilsson's two hybrids differ only in how the planes are cut by regions.
+// and Nilsson's two hybrids differ only in how the planes are cut (PlaneCut).
 #include "methods/kit/method/gpu_method.hpp"
 #include "methods/kit/planes/plane_pass.hpp"
 
@@ -8,7 +8,7 @@ namespace airlight::kit {
 
 class PlaneMethod final : public GpuMethod {
 public:
-  PlaneMethod(const Settings& s, PlaneRegions regions) : GpuMethod(s), pass_(PlaneSettings::from(s, regions)) {}
+  PlaneMethod(const Settings& s, PlaneCut cut) : GpuMethod(s), pass_(PlaneSettings::from(s, cut)) {}
 
 private:
   void prepare_airlight(const Scene& scene) override { pass_.prepare(scene); }

@@ -26,7 +26,7 @@ std::vector<GLuint> lattice_indices(int n) {
 
 }  // namespace
 
-std::vector<SettingSpec> plane_settings(bool regions) {
+std::vector<SettingSpec> plane_settings(bool cut) {
   using T = SettingSpec::Type;
   std::vector<SettingSpec> all{{"planes", T::integer, 100, 1, max_planes, {},
            "n: virtual planes per light, evenly spaced in view depth from the eye to the far end of the light's "
@@ -48,21 +48,21 @@ std::vector<SettingSpec> plane_settings(bool regions) {
           {"clip", T::boolean, 1, 0, 1, {},
            "clip the planes to the light's influence volume (a pyramid around a spot's cone, a beam's box), so "
            "fragments outside it are never shaded (Nilsson 3.1)"}};
-  if (regions)  // each plane samples its slab's middle, where its regions are classified
+  if (cut)  // each plane samples its slab's middle, where its regions are classified
     std::erase_if(all, [](const SettingSpec& s) { return s.name == "lattice" || s.name == "jitter"; });
   return all;
 }
 
-PlaneSettings PlaneSettings::from(const Settings& s, PlaneRegions regions) {
+PlaneSettings PlaneSettings::from(const Settings& s, PlaneCut cut) {
   enum class Sampling { lit, plane };  // the `sampling` setting's choices, in order
-  const bool whole = regions == PlaneRegions::none;
+  const bool whole = cut == PlaneCut::none;
   return {s.integer("planes"),
           s.real("spacing"),
           whole ? s.integer("lattice") : 0,
           whole ? s.option<Jitter>("jitter") : Jitter::none,
           s.option<Sampling>("sampling") == Sampling::lit,
           s.boolean("clip"),
-          regions};
+          cut};
 }
 
 void PlanePass::prepare(const Scene& scene) {
@@ -74,13 +74,14 @@ void PlanePass::prepare(const Scene& scene) {
   indices_ = gpu::make_buffer(indices.size() * sizeof(GLuint), indices.data());
   mesh_ = gpu::make_vertex_array();  // no attributes: vertices come from gl_VertexID
   glVertexArrayElementBuffer(mesh_.id(), indices_.id());
-  region_mesh_ = gpu::make_vertex_array();  // RegionVertex: position, then plane
-  glEnableVertexArrayAttrib(region_mesh_.id(), 0);
-  glVertexArrayAttribFormat(region_mesh_.id(), 0, 3, GL_FLOAT, GL_FALSE, offsetof(RegionVertex, position));
-  glVertexArrayAttribBinding(region_mesh_.id(), 0, 0);
-  glEnableVertexArrayAttrib(region_mesh_.id(), 1);
-  glVertexArrayAttribIFormat(region_mesh_.id(), 1, 1, GL_INT, offsetof(RegionVertex, plane));
-  glVertexArrayAttribBinding(region_mesh_.id(), 1, 0);
+  piece_mesh_ = gpu::make_vertex_array();  // PieceVertex: position, then plane
+  piece_vertices_.release();  // bound to the new piece_mesh_ when made again
+  glEnableVertexArrayAttrib(piece_mesh_.id(), 0);
+  glVertexArrayAttribFormat(piece_mesh_.id(), 0, 3, GL_FLOAT, GL_FALSE, offsetof(PieceVertex, position));
+  glVertexArrayAttribBinding(piece_mesh_.id(), 0, 0);
+  glEnableVertexArrayAttrib(piece_mesh_.id(), 1);
+  glVertexArrayAttribIFormat(piece_mesh_.id(), 1, 1, GL_INT, offsetof(PieceVertex, plane));
+  glVertexArrayAttribBinding(piece_mesh_.id(), 1, 0);
   no_vertices_ = gpu::make_vertex_array();
   fbo_ = gpu::make_framebuffer();
   if (epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
@@ -88,19 +89,19 @@ void PlanePass::prepare(const Scene& scene) {
     glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
     invocations_ = gpu::Query(id);
   }
-  regions_.prepare(scene);
-  if (settings_.regions != PlaneRegions::none) slab_regions_.prepare(scene);
+  light_bounds_.prepare(scene);
+  if (settings_.cut != PlaneCut::none) slab_pieces_.prepare(scene);
 }
 
 // A sample lies anywhere in its slab, up to dz/2 in depth, i.e. dz/(2 cos)
 // along its ray, from the middle where the clip distances and the regions are taken.
 float PlanePass::reach(const Slabs& s) const { return 0.5f * s.dz / cos_edge_; }
 
-std::vector<MemoryNeed> slab_region_needs(const Scene& scene, const Settings& settings, int, int) {
+std::vector<MemoryNeed> slab_piece_needs(const Scene& scene, const Settings& settings, int, int) {
   // Measured per plane and caster, the polygons and their beam-tree pieces
   // (docs/decisions.md "Memory for settings").
-  constexpr double bytes_per_region = 3000.0;
-  constexpr double bytes_per_buffer = 2.0 * 8 * 3 * sizeof(RegionVertex);  // about 8 triangles, the buffer grown 2×
+  constexpr double bytes_per_piece_set = 3000.0;
+  constexpr double bytes_per_buffer = 2.0 * 8 * 3 * sizeof(PieceVertex);  // about 8 triangles, the buffer grown 2×
   const double spacing = settings.real("spacing"), casters = caster_count(scene);
   const double planes = std::clamp(spacing > 0.0 ? std::ceil(scene.camera.far / spacing) : settings.integer("planes"),
                                    1.0, double(max_planes));
@@ -108,7 +109,7 @@ std::vector<MemoryNeed> slab_region_needs(const Scene& scene, const Settings& se
   return {{spacing > 0.0 ? "spacing" : "planes",
            "the slab regions of " + counted(planes, "plane") + " across the bounding volumes of " +
                counted(casters, "caster") + " (about 3 KB per plane and caster)",
-           bytes_per_region * planes * casters, bytes_per_buffer * planes * casters}};
+           bytes_per_piece_set * planes * casters, bytes_per_buffer * planes * casters}};
 }
 
 PlanePass::Slabs PlanePass::slabs(const LightBounds& volume) const {
@@ -120,7 +121,7 @@ PlanePass::Slabs PlanePass::slabs(const LightBounds& volume) const {
 }
 
 void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
-  regions_.update(frame.inputs());
+  light_bounds_.update(frame.inputs());
   camera_ = geometry::camera_basis(frame.inputs().camera);
   far_ = frame.inputs().camera.far;
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -147,9 +148,9 @@ void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
       1.0 / geometry::corner_distance(frame.inputs().camera, double(frame.width()) / frame.height(), 1.0));
   glBindTextureUnit(jitter_unit, noise_.id());
   planes_drawn_ = 0.0;
-  slab_regions_.reset();
+  slab_pieces_.reset();
   if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
-  for (int i = 0; i < static_cast<int>(regions_.bounds().size()); ++i) draw_light(frame, i, regions_.bounds()[i]);
+  for (int i = 0; i < static_cast<int>(light_bounds_.bounds().size()); ++i) draw_light(frame, i, light_bounds_.bounds()[i]);
   if (invocations_) {
     glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
     GLuint64 count = 0;
@@ -176,7 +177,7 @@ std::string PlanePass::defines(int light, Part part) const {
   if (part == Part::fully_lit || part == Part::uncertain) d += "#define FULL_SLABS\n";
   if (part == Part::cut_slabs) d += "#define CUT_SLABS\n";
   if (part == Part::fully_lit)
-    d += settings_.regions == PlaneRegions::gamma ? "#define FULLY_LIT_GAMMA\n" : "#define FULLY_LIT\n";
+    d += settings_.cut == PlaneCut::gamma ? "#define FULLY_LIT_GAMMA\n" : "#define FULLY_LIT\n";
   return d;
 }
 
@@ -184,10 +185,10 @@ void PlanePass::draw_light(const SceneFrame& frame, int light, const LightBounds
   const Slabs s = slabs(volume);
   if (s.count == 0) return;
   const std::vector<glm::vec4> clip = settings_.clip ? volume.clip : std::vector<glm::vec4>{};
-  if (settings_.regions == PlaneRegions::none)
+  if (settings_.cut == PlaneCut::none)
     draw(frame, light, Part::lattice, s, clip);
   else
-    draw_regions(frame, light, s, clip);
+    draw_pieces(frame, light, s, clip);
   planes_drawn_ += s.count;
 }
 
@@ -198,14 +199,14 @@ void PlanePass::draw_light(const SceneFrame& frame, int light, const LightBounds
 // the surface cuts samples elsewhere; a full-screen pass takes it with the
 // shadow test (CUT_SLABS). So sampling=plane gives planes' image, with fewer
 // fragments. Lit sampling's pieces and Γ over a fully lit slab reach the whole
-// slab: its regions are then taken with that margin (slab_regions.hpp).
-void PlanePass::draw_regions(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip) {
+// slab: its regions are then taken with that margin (slab_pieces.hpp).
+void PlanePass::draw_pieces(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip) {
   std::vector<glm::vec4> widened = clip;
   for (glm::vec4& h : widened) h.w += reach(s);
-  slab_regions_.build(frame.inputs(), light, s.count, s.dz, reach(s), widened);
-  glEnable(GL_CULL_FACE);  // the regions' triangles face the eye (slab_regions.cpp)
+  slab_pieces_.build(frame.inputs(), light, s.count, s.dz, reach(s), widened);
+  glEnable(GL_CULL_FACE);  // the pieces' triangles face the eye (slab_pieces.cpp)
   for (const Part part : {Part::fully_lit, Part::uncertain}) {
-    upload(part == Part::fully_lit ? slab_regions_.fully_lit() : slab_regions_.uncertain());
+    upload(part == Part::fully_lit ? slab_pieces_.fully_lit() : slab_pieces_.uncertain());
     draw(frame, light, part, s, clip);
   }
   glDisable(GL_CULL_FACE);
@@ -214,22 +215,18 @@ void PlanePass::draw_regions(const SceneFrame& frame, int light, const Slabs& s,
   glEnable(GL_DEPTH_TEST);
 }
 
-void PlanePass::upload(const std::vector<RegionVertex>& vertices) {
-  region_count_ = static_cast<int>(vertices.size());
+void PlanePass::upload(const std::vector<PieceVertex>& vertices) {
+  piece_count_ = static_cast<int>(vertices.size());
   if (vertices.empty()) return;
-  if (vertices.size() > region_capacity_) {
-    region_capacity_ = 2 * vertices.size();
-    region_vertices_ = gpu::make_buffer(region_capacity_ * sizeof(RegionVertex), nullptr);
-    glVertexArrayVertexBuffer(region_mesh_.id(), 0, region_vertices_.id(), 0, sizeof(RegionVertex));
-  }
-  glNamedBufferSubData(region_vertices_.id(), 0, vertices.size() * sizeof(RegionVertex), vertices.data());
+  if (piece_vertices_.assign(vertices))
+    glVertexArrayVertexBuffer(piece_mesh_.id(), 0, piece_vertices_.id(), 0, sizeof(PieceVertex));
 }
 
 void PlanePass::draw(const SceneFrame& frame, int light, Part part, const Slabs& s, const std::vector<glm::vec4>& clip) {
-  if (part != Part::lattice && part != Part::cut_slabs && region_count_ == 0) return;
+  if (part != Part::lattice && part != Part::cut_slabs && piece_count_ == 0) return;
   const char* vertex = part == Part::lattice     ? "methods/kit/planes/planes.vert.glsl"
                        : part == Part::cut_slabs ? "methods/kit/frame/fullscreen.vert.glsl"
-                                                 : "methods/kit/planes/region_planes.vert.glsl";
+                                                 : "methods/kit/planes/piece_planes.vert.glsl";
   const gpu::Program& program = gpu::cached_program(
       {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, "methods/kit/planes/planes.frag.glsl"}},
       frame.defines() + defines(light, part));
@@ -245,8 +242,8 @@ void PlanePass::draw(const SceneFrame& frame, int light, Part part, const Slabs&
   gpu::set_uniform(program, "clip_count", static_cast<int>(clip.size()));
   gpu::set_uniform(program, "clip_margin", reach(s));
   if (part != Part::lattice) {
-    glBindVertexArray(region_mesh_.id());
-    glDrawArrays(GL_TRIANGLES, 0, region_count_);
+    glBindVertexArray(piece_mesh_.id());
+    glDrawArrays(GL_TRIANGLES, 0, piece_count_);
     return;
   }
   gpu::set_uniform(program, "lattice", std::max(settings_.lattice, 1));
@@ -257,10 +254,10 @@ void PlanePass::draw(const SceneFrame& frame, int light, Part part, const Slabs&
 std::vector<std::pair<std::string, double>> PlanePass::stats() const {
   std::vector<std::pair<std::string, double>> s{{"planes", planes_drawn_},
                                                 {"fragments", fragments_},
-                                                {"rebuilt_lights", regions_.rebuilt()},
-                                                {"rebuild_s", regions_.seconds()}};
-  if (settings_.regions == PlaneRegions::none) return s;
-  const auto more = slab_regions_.stats();
+                                                {"rebuilt_lights", light_bounds_.rebuilt()},
+                                                {"rebuild_s", light_bounds_.seconds()}};
+  if (settings_.cut == PlaneCut::none) return s;
+  const auto more = slab_pieces_.stats();
   s.insert(s.end(), more.begin(), more.end());
   return s;
 }

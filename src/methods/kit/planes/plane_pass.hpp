@@ -5,11 +5,12 @@
 // G-buffer, clipped to the light's influence volume, blended additively into
 // the RGBA32F airlight target. Shared by planes and by Nilsson's hybrids
 // (§5.3–5.4), which draw each plane as its fully lit and uncertain parts
-// (slab_regions.hpp) instead of the lattice.
+// (slab_pieces.hpp) instead of the lattice.
+#include "gpu/growing_buffer.hpp"
 #include "methods/kit/planes/light_bounds.hpp"
 #include "methods/kit/sampling/noise.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
-#include "methods/kit/planes/slab_regions.hpp"
+#include "methods/kit/planes/slab_pieces.hpp"
 
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
@@ -18,19 +19,20 @@
 
 namespace airlight::kit {
 
-// How the planes are drawn: whole (Dobashi), or cut by the bounding volumes'
-// regions with the unlit parts left out and the fully lit parts sampled
+// How the planes are drawn: whole (Dobashi), or cut into pieces by the light's
+// regions of space (geometry::LightRegions over the casters' bounding volumes:
+// fully lit, uncertain, unlit; slab_pieces.hpp), the unlit pieces left out and the fully lit parts sampled
 // without the shadow test (Nilsson's Method 1, clip) or integrated by Γ
 // (his Method 2, gamma).
-enum class PlaneRegions { none, clip, gamma };
+enum class PlaneCut { none, clip, gamma };
 
-// Every setting of the planes, or (regions) those that keep a plane's sample
+// Every setting of the planes, or (cut) those that keep a plane's sample
 // at the middle of its slab: no lattice, no jitter.
-std::vector<SettingSpec> plane_settings(bool regions = false);
+std::vector<SettingSpec> plane_settings(bool cut = false);
 
-// The hybrids' slab regions (SlabRegions, one light at a time): the planes'
+// The hybrids' slab pieces (SlabPieces, one light at a time): the planes'
 // polygons cut by the casters' bounding volumes, on the CPU and the GPU.
-std::vector<MemoryNeed> slab_region_needs(const Scene& scene, const Settings& settings, int width, int height);
+std::vector<MemoryNeed> slab_piece_needs(const Scene& scene, const Settings& settings, int width, int height);
 
 struct PlaneSettings {
   int planes = 100;              // n per light
@@ -39,9 +41,9 @@ struct PlaneSettings {
   Jitter jitter = Jitter::none;
   bool lit_sampling = true;      // sample each slab's lit piece, else the slab (Dobashi)
   bool clip = true;              // clip planes to the influence volume
-  PlaneRegions regions = PlaneRegions::none;
+  PlaneCut cut = PlaneCut::none;
 
-  static PlaneSettings from(const Settings& settings, PlaneRegions regions = PlaneRegions::none);
+  static PlaneSettings from(const Settings& settings, PlaneCut cut = PlaneCut::none);
 };
 
 class PlanePass {
@@ -58,7 +60,7 @@ public:
   // Of the last run: planes, fragment shader invocations (the planes' fragments
   // that passed the depth test and were shaded; -1 without
   // ARB_pipeline_statistics_query), the lights whose lit region was traced
-  // again and its seconds, and with regions their polygons and trees.
+  // again and its seconds, and when cut its pieces' polygons and trees.
   std::vector<std::pair<std::string, double>> stats() const;
 
 private:
@@ -71,21 +73,21 @@ private:
   enum class Part { lattice, fully_lit, uncertain, cut_slabs };
   std::string defines(int light, Part part) const;
   void draw_light(const SceneFrame& frame, int light, const LightBounds& volume);
-  void draw_regions(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip);
+  void draw_pieces(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip);
   void draw(const SceneFrame& frame, int light, Part part, const Slabs& s, const std::vector<glm::vec4>& clip);
-  void upload(const std::vector<RegionVertex>& vertices);
+  void upload(const std::vector<PieceVertex>& vertices);
 
   PlaneSettings settings_;
   geometry::CameraBasis camera_;
   double far_ = 0.0;
   float cos_edge_ = 1.0f;  // the smallest cos(ray, forward) in the image
-  LitRegions regions_;
-  SlabRegions slab_regions_;
+  FrameLightBounds light_bounds_;
+  SlabPieces slab_pieces_;
   gpu::Texture noise_;
-  gpu::VertexArray mesh_, region_mesh_, no_vertices_;
-  gpu::Buffer indices_, region_vertices_;
-  size_t region_capacity_ = 0;
-  int region_count_ = 0;
+  gpu::VertexArray mesh_, piece_mesh_, no_vertices_;
+  gpu::Buffer indices_;
+  gpu::GrowingBuffer<PieceVertex> piece_vertices_{2};
+  int piece_count_ = 0;
   gpu::Framebuffer fbo_;
   gpu::Query invocations_;
   int index_count_ = 0;

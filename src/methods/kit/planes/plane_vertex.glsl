@@ -1,4 +1,4 @@
-// What a vertex of a virtual plane hands on (planes.vert.glsl, region_planes.vert.glsl):
+// What a vertex of a virtual plane hands on (planes.vert.glsl, piece_planes.vert.glsl):
 // its clip distances to the light's influence volume, taken at the slab's middle x and
 // widened by how far a fragment's sample may lie from it, its plane and ξ.
 #include "methods/kit/frame/view_ray.glsl"

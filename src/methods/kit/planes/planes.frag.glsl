@@ -12,8 +12,8 @@
 // Specialized by PlanePass, one program per light and part: PLANE_LIGHT (the
 // light's index), LATTICE_XI (ξ from the lattice), JITTER (per-pixel offsets of
 // the samples within their slabs, Dobashi §7), LIT_SAMPLING (the slab's lit
-// piece, else the slab as Dobashi); with regions (plane_pass.cpp
-// draw_regions) FULL_SLABS (only slabs wholly in front of the surface),
+// piece, else the slab as Dobashi); for a cut plane's pieces (plane_pass.cpp
+// draw_pieces) FULL_SLABS (only slabs wholly in front of the surface),
 // FULLY_LIT (no shadow test) or FULLY_LIT_GAMMA (Γ), and CUT_SLABS (a
 // full-screen pass over the slabs the surface cuts).
 #define SCENE_IN_REGISTERS

@@ -1,7 +1,7 @@
 #pragma once
-// Test helpers shared by raymarch_test and interleaved_test: rendering a method
-// with settings, the cached reference, and a scene built in code that uses
-// every feature of the model.
+// Test helpers shared by every method's tests and the kit's (frame, engine,
+// light volume, method): rendering a method with settings, the cached
+// reference, and a scene built in code that uses every feature of the model.
 #include "reference/cache.hpp"
 #include "reference/reference.hpp"
 

@@ -29,24 +29,6 @@ glm::dvec3 up_hint(const glm::dvec3& dir) {
 
 }  // namespace
 
-Bounds caster_bounds(const Mesh& mesh) {
-  Bounds b;
-  if (!mesh.casts_shadows) return b;
-  for (const glm::vec3& p : mesh.positions) b.add(glm::dvec3(p));
-  return b;
-}
-
-Bounds world_bounds(const std::vector<Bounds>& meshes, const std::vector<glm::mat4>& transforms) {
-  Bounds b;
-  for (size_t m = 0; m < meshes.size(); ++m) {
-    const Bounds& local = meshes[m];
-    if (local.empty()) continue;
-    const glm::dmat4 model = transforms.empty() ? glm::dmat4(1.0) : glm::dmat4(transforms[m]);
-    for (int k = 0; k < 8; ++k) b.add(glm::dvec3(model * glm::dvec4(local.corner(k), 1.0)));
-  }
-  return b;
-}
-
 // A spot's cone in a square perspective map of field 2·cone.
 Projection spot_projection(const Light& light, const Bounds& b) {
   const glm::dvec3 apex(light.position), axis = glm::normalize(glm::dvec3(light.direction));
@@ -106,30 +88,12 @@ std::array<glm::mat4, 6> cube_face_matrices(const glm::dvec3& apex, const Bounds
   return matrices;
 }
 
-
 int shadow_kind(const Light& light, const Bounds& bounds, const EngineShadow* engine) {
   if (engine) return engine->kind == EngineShadow::Kind::cube ? shadow_cube : shadow_map;
   if (bounds.empty()) return shadow_none;  // nothing can occlude
   if (light.type == LightType::point) return shadow_cube;
   if (light.type == LightType::spot && light.cone_deg >= wide_spot_deg) return shadow_cube;
   return shadow_map;
-}
-
-// A shadow texel's world size at distance r is (per_distance·r + constant) /
-// resolution: read off an engine's projection (perspective: 2/P₁₁ at unit
-// distance; orthographic: 2/P₁₁ everywhere), the larger of the two axes.
-Projection engine_projection(const EngineShadow& e) {
-  const glm::mat4& p = e.projection;
-  const float across = 2.0f / std::max(std::min(std::abs(p[0][0]), std::abs(p[1][1])), 1e-30f);
-  const bool perspective = p[3][3] == 0.0f;
-  return {p * e.view, perspective ? across : 0.0f, perspective ? 0.0f : across};
-}
-
-// The window depth a projection gives its far plane (1, or 0 under reversed-Z):
-// where an engine cleared its depth buffer, no surface or occluder was drawn.
-float far_window_depth(const glm::mat4& projection) {
-  const glm::vec4 near = projection * glm::vec4(0, 0, -1, 1), further = projection * glm::vec4(0, 0, -2, 1);
-  return further.z / further.w < near.z / near.w ? 0.0f : 1.0f;
 }
 
 }  // namespace airlight::kit

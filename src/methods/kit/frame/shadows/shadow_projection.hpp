@@ -1,15 +1,15 @@
 #pragma once
 // Where each light's shadow map looks (docs/design.md §3): which kind of map a
 // light gets, and the projection of a 2D map or a cube's faces, fitted to the
-// bounds of the scene's meshes as this frame places them — or read off an
-// engine's own map (<airlight/engine.hpp>).
+// bounds of the casters as this frame places them (caster_bounds.hpp) — or
+// read off an engine's own map (engine_projection.hpp).
+#include "methods/kit/frame/shadows/caster_bounds.hpp"
+
 #include <airlight/engine.hpp>
 #include <airlight/scene.hpp>
 #include <array>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
-#include <limits>
-#include <vector>
 
 namespace airlight::kit {
 
@@ -20,25 +20,6 @@ enum ShadowKind { shadow_none = 0, shadow_map = 1, shadow_cube = 2 };
 // map of field 2·cone has texels tan(cone) times coarser at its centre than a cube
 // face (90°); at 60° that is 1.7×, and it diverges toward 90°.
 inline constexpr float wide_spot_deg = 60.0f;
-
-struct Bounds {
-  glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
-  bool empty() const { return !(lo.x <= hi.x); }
-  glm::dvec3 corner(int k) const { return {(k & 1 ? hi : lo).x, (k & 2 ? hi : lo).y, (k & 4 ? hi : lo).z}; }
-  void add(const glm::dvec3& p) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-};
-
-// Object-space bounds of one mesh as the shadow maps see it: empty for a mesh
-// that casts no shadow, which they neither draw nor need to cover (an
-// enclosure around a small scene spread a sun's map over the room, and its
-// texels were many pixels wide at casters beside the eye: random scenes 169, 573).
-Bounds caster_bounds(const Mesh& mesh);
-// World bounds of the meshes this frame: each mesh's box corners through its
-// transform (none: where the scene put it).
-Bounds world_bounds(const std::vector<Bounds>& meshes, const std::vector<glm::mat4>& transforms);
 
 // The map an engine gives the light, else none where nothing can occlude, a
 // cube for point lights and spots from wide_spot_deg, a 2D map otherwise.
@@ -57,9 +38,5 @@ Projection spot_projection(const Light& light, const Bounds& bounds);
 Projection directional_projection(const Light& light, const Bounds& bounds);
 // A point light's (or wide spot's) six faces in GL's order.
 std::array<glm::mat4, 6> cube_face_matrices(const glm::dvec3& apex, const Bounds& bounds);
-// An engine's 2D map: its matrix and texel size from its projection.
-Projection engine_projection(const EngineShadow& engine);
-// The window depth a projection gives its far plane (1, or 0 under reversed-Z).
-float far_window_depth(const glm::mat4& projection);
 
 }  // namespace airlight::kit

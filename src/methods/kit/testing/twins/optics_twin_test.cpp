@@ -211,7 +211,7 @@ TEST(OpticsTwin, GoboCoordinatesAndSamplesAcrossTheSquare) {
     }
   const auto out = run_twin("gobo.comp.glsl", in, 5, 2);
 
-  Errors uv_errors("gobo_uv", false), colour_errors("sample_gobo", false);
+  Errors uv_errors("gobo_uv", false), color_errors("sample_gobo", false);
   for (size_t i = 0; i < lights.size(); ++i) {
     const glm::vec4* args = &in[5 * i];
     const glm::dvec3 dir(args[3]);
@@ -226,9 +226,9 @@ TEST(OpticsTwin, GoboCoordinatesAndSamplesAcrossTheSquare) {
     // C++ gobo colour. Bilinear weights in float: ~2ε of texel values <= 1.
     const glm::dvec2 lookup(args[4]);
     const bool inside = lookup.x >= 0 && lookup.x <= 1 && lookup.y >= 0 && lookup.y <= 1;
-    const glm::dvec3 colour = inside ? optics::sample_gobo(*image, lookup) : glm::dvec3(0.0);
+    const glm::dvec3 color = inside ? optics::sample_gobo(*image, lookup) : glm::dvec3(0.0);
     auto at = [&] { return "uv (" + std::to_string(lookup.x) + ", " + std::to_string(lookup.y) + ")"; };
-    for (int c = 0; c < 3; ++c) colour_errors.check(out[2 * i + 1][c], colour[c], 1e-6, at);
+    for (int c = 0; c < 3; ++c) color_errors.check(out[2 * i + 1][c], color[c], 1e-6, at);
   }
 }
 

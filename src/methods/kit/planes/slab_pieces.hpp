@@ -1,9 +1,10 @@
 #pragma once
-// Nilsson 2008 §5.3–5.4: the virtual planes cut by each light's regions. Per
-// frame and light, the beam trees of the casters' bounding volumes
-// (geometry::LightRegions) partition each plane's cross-section of the view
-// frustum into fully lit, uncertain and unlit polygons; the plane pass draws
-// the first two with different programs and never the third.
+// Nilsson 2008 §5.3–5.4: the virtual planes cut into pieces by each light's
+// regions of space. Per frame and light, the beam trees of the casters'
+// bounding volumes (geometry::LightRegions: fully lit, uncertain, unlit)
+// partition each plane's cross-section of the view frustum into pieces of
+// each region; the plane pass draws the fully lit and uncertain pieces with
+// different programs and never the unlit ones.
 //
 // A plane stands for its slab [k·dz, (k+1)·dz] of view depth and samples it at
 // its middle (plane_pass.hpp), so the cross-section is taken there: a full
@@ -26,13 +27,13 @@
 
 namespace airlight::kit {
 
-// One corner of a region triangle: world position at its slab's middle, and the slab.
-struct RegionVertex {
+// One corner of a piece's triangle: world position at its slab's middle, and the slab.
+struct PieceVertex {
   glm::vec3 position;
   int plane;
 };
 
-class SlabRegions {
+class SlabPieces {
 public:
   // The shadow casters' bounding volumes (geometry::bounding_volumes), in the scene's coordinates.
   void prepare(const Scene& scene);
@@ -43,17 +44,17 @@ public:
   // clip distances are), partitioned into triangles.
   void build(const FrameInputs& inputs, int light, int count, float dz, float margin,
              const std::vector<glm::vec4>& clip);
-  const std::vector<RegionVertex>& fully_lit() const { return fully_lit_; }
-  const std::vector<RegionVertex>& uncertain() const { return uncertain_; }
+  const std::vector<PieceVertex>& fully_lit() const { return fully_lit_; }
+  const std::vector<PieceVertex>& uncertain() const { return uncertain_; }
 
-  // Summed over the lights since reset(): region polygons per kind, the trees' nodes, build seconds.
+  // Summed over the lights since reset(): piece polygons per region, the trees' nodes, build seconds.
   void reset();
   std::vector<std::pair<std::string, double>> stats() const;
 
 private:
   std::vector<geometry::BoundingVolumes> volumes_;
   std::vector<int> meshes_;  // index into Scene::meshes per volume
-  std::vector<RegionVertex> fully_lit_, uncertain_;
+  std::vector<PieceVertex> fully_lit_, uncertain_;
   double polygons_[3] = {0.0, 0.0, 0.0};
   double nodes_ = 0.0, seconds_ = 0.0;
 };

@@ -1,4 +1,4 @@
-#include "methods/kit/planes/slab_regions.hpp"
+#include "methods/kit/planes/slab_pieces.hpp"
 
 #include "geometry/conforming_set.hpp"
 
@@ -139,7 +139,7 @@ private:
 // rounding turns into slivers of either winding; back-face culling drops
 // those the pass draws).
 void append_fan(const geometry::ConformingSet& set, const std::vector<int>& loop, int plane,
-                std::vector<RegionVertex>& out) {
+                std::vector<PieceVertex>& out) {
   glm::dvec3 centre(0.0);
   for (const int id : loop) centre += set.vertex(id);
   centre /= double(loop.size());
@@ -152,7 +152,7 @@ void append_fan(const geometry::ConformingSet& set, const std::vector<int>& loop
 
 // One plane's triangles per region and its region polygons (before merging).
 struct Slab {
-  std::vector<RegionVertex> fully_lit, uncertain;
+  std::vector<PieceVertex> fully_lit, uncertain;
   double polygons[3] = {0.0, 0.0, 0.0};
 };
 
@@ -194,7 +194,7 @@ Slab partitioned(const geometry::LightRegions& regions, const geometry::CameraBa
 
 }  // namespace
 
-void SlabRegions::prepare(const Scene& scene) {
+void SlabPieces::prepare(const Scene& scene) {
   volumes_.clear();
   meshes_.clear();
   for (size_t m = 0; m < scene.meshes.size(); ++m)
@@ -204,18 +204,18 @@ void SlabRegions::prepare(const Scene& scene) {
     }
 }
 
-void SlabRegions::reset() {
+void SlabPieces::reset() {
   polygons_[0] = polygons_[1] = polygons_[2] = 0.0;
   nodes_ = seconds_ = 0.0;
 }
 
-void SlabRegions::build(const FrameInputs& inputs, int light, int count, float dz, float margin,
+void SlabPieces::build(const FrameInputs& inputs, int light, int count, float dz, float margin,
                         const std::vector<glm::vec4>& clip) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<geometry::BoundingVolumes> posed = volumes_;
   for (size_t k = 0; k < posed.size(); ++k) {
     geometry::BoundingVolumes& v = posed[k];
-    if (!inputs.transforms.empty()) {
+    if (!inputs.transforms.empty()) {  // not model_of's identity: moved() would renormalize the boxes' axes
       const glm::mat4& m = inputs.transforms[meshes_[k]];
       v.outer = moved(v.outer, m);
       if (v.inner) v.inner = moved(*v.inner, m);
@@ -246,7 +246,7 @@ void SlabRegions::build(const FrameInputs& inputs, int light, int count, float d
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::vector<std::pair<std::string, double>> SlabRegions::stats() const {
+std::vector<std::pair<std::string, double>> SlabPieces::stats() const {
   return {{"fully_lit_polygons", polygons_[0]},
           {"uncertain_polygons", polygons_[1]},
           {"unlit_polygons", polygons_[2]},

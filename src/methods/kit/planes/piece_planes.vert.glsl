@@ -1,5 +1,5 @@
-// Nilsson 2008 §5.3: the parts of the virtual planes cut by a light's regions
-// (slab_regions.hpp), one triangle list of world positions at their slabs'
+// Nilsson 2008 §5.3: the pieces of the virtual planes cut by a light's regions
+// (slab_pieces.hpp), one triangle list of world positions at their slabs'
 // middles. Rasterized there — nearer than the slab's far face by dz/2, far more
 // than the depth buffer's resolution, so the depth test keeps every slab wholly
 // in front of the surface (planes.frag.glsl FULL_SLABS drops the rest) — or
