@@ -1,12 +1,15 @@
 #pragma once
-// Lit intervals by counting crossings (lit_intervals.glsl): a method hands in,
-// per frame, the triangles that bound each light's lit region with their
-// weights, and each light's count at the eye; the pass draws their crossings
-// with every pixel's view ray into per-pixel lists ("crossings") and sums Γ
-// over each light's lit intervals into the target ("airlight",
-// lit_intervals.comp.glsl). Shared by shadow_planes and beam_volumes.
+// Lit intervals by counting crossings (lit_intervals.glsl): a geometry hands
+// in, per frame, the triangles that bound each light's lit region with their
+// weights, and each light's count at the eye (CrossingGeometry); the pass draws
+// their crossings with every pixel's view ray into per-pixel lists
+// ("crossings") and sums Γ over each light's lit intervals into the target
+// ("airlight", lit_intervals.comp.glsl). The pass of shadow_planes,
+// beam_volumes and light_volume (CrossingMethod); sv_march draws its shell
+// with CountedDraw.
 #include "gpu/gl.hpp"
 #include "gpu/timer.hpp"
+#include "methods/kit/counting/crossing_geometry.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
 
 #include <airlight/method.hpp>
@@ -18,50 +21,6 @@
 #include <vector>
 
 namespace airlight::kit {
-
-// One triangle of a lit region's boundary (lit_intervals.glsl CountedTriangle).
-struct CountedTriangle {
-  glm::vec4 corners[3];  // homogeneous world positions; w = 0: at infinity
-  glm::vec4 plane;       // unit normal n and n·x, computed in double (counted_plane)
-  glm::ivec4 light_weight{0};  // light index, weight w
-};
-
-// The plane through three homogeneous points (at most one at infinity, which
-// then gives the plane's direction), its normal normalized in double and
-// oriented as (b − a) × (c − a): in float, a short edge far from the light
-// loses the normal's direction, and a crossing's sign with it.
-glm::vec4 counted_plane(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c);
-
-// A counted plane through the eye (take_planes_at_eye): a ray crosses it at
-// t = 0, by +weight where n·dir > 0.
-struct EyePlane {
-  glm::vec3 normal;
-  int light = 0;
-  int weight = 0;
-};
-
-// What the resolve starts each ray's counts from: per light, the count at a
-// point just off the eye on the negative side of its planes through the eye,
-// and those planes (at most max_eye_planes in all).
-struct EyeCounts {
-  std::vector<int> counts;
-  std::vector<EyePlane> planes;
-};
-inline constexpr int max_eye_planes = 8;  // lit_intervals.comp.glsl's MAX_EYE_PLANES
-
-// Light `light`'s (`source`'s) triangles among triangles[first, end) whose
-// plane holds the light's rays, a shadow boundary, and passes through the eye as far as the GPU can tell (within 1e-5 of the coordinates'
-// magnitude, float's rounding of the crossing test many times over) with the
-// eye inside them: seen edge-on they cover no pixel, and a ray's crossing at
-// t ≈ 0 is lost or taken on the side float rounding picks (random scene 31:
-// the eye on a shadow plane, the shadow on the wrong side of a line through
-// the image). Their weights become 0 and they are returned, with in `beside` a
-// point off the eye on the negative side of all of them, where the caller
-// counts; none when there are none, or more than `room`, or no such point is
-// found (then they are left as they were). Triangles through the eye with the
-// eye outside them are crossed by no ray from it: their weights become 0 too.
-std::vector<EyePlane> take_planes_at_eye(std::vector<CountedTriangle>& triangles, size_t first, int light,
-                                         const Light& source, const glm::dvec3& eye, size_t room, glm::dvec3& beside);
 
 // samples: where Γ has no closed form, the points per lit interval that
 // correct it (lit_gamma.glsl's SAMPLES).
@@ -111,28 +70,26 @@ private:
   gpu::Query invocations_;  // fragment shader invocations (GL_ARB_pipeline_statistics_query), when there
 };
 
-class LitIntervalPass {
+class LitIntervalPass final : public CrossingPass {
 public:
   explicit LitIntervalPass(const Settings& settings);
 
-  // Needs a current context.
-  void prepare();
+  void prepare() override;
 
-  // The crossings of `triangles` with the frame's pixel rays, then Σ Γ over
-  // each light's lit intervals into `target`; the frame must be bound.
-  void run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles, const EyeCounts& eye,
-           const gpu::Texture& target, gpu::PassTimer& timer);
-  // The same with the triangles already on the GPU (a mesh a compute pass built).
-  void run(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count, const EyeCounts& eye,
-           const gpu::Texture& target, gpu::PassTimer& timer);
+  // The crossings of the geometry's triangles (uploaded first if on the CPU)
+  // with the frame's pixel rays, then Σ Γ over each light's lit intervals
+  // from its eye counts into `target`.
+  void run(const SceneFrame& frame, const CrossingGeometry& geometry, const gpu::Texture& target,
+           gpu::PassTimer& timer) override;
 
   // crossings (drawn into the lists), fragments (shaded by the last draw of
   // the triangles; 0 without pipeline statistics), redraws (the pool grown
   // this frame), loop_limited (pixels llvmpipe's loop limit cut short) and
   // passes (of the resolve: more than one where that limit was met).
-  std::vector<std::pair<std::string, double>> stats() const;
+  std::vector<std::pair<std::string, double>> stats() const override;
 
 private:
+  const gpu::Buffer& upload(std::span<const CountedTriangle> triangles);
   void list_crossings(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
   void draw(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
   void resolve(const SceneFrame& frame, const EyeCounts& eye, const gpu::Texture& target);
