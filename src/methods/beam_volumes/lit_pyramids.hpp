@@ -9,12 +9,6 @@
 #include "geometry/conforming_set.hpp"
 #include "methods/kit/counting/crossing_geometry.hpp"
 
-#include <airlight/method.hpp>
-#include <airlight/scene.hpp>
-#include <string>
-#include <utility>
-#include <vector>
-
 namespace airlight::methods {
 
 class LitPyramids final : public kit::CasterCrossings {

@@ -8,12 +8,6 @@
 #include "geometry/shadow_edges.hpp"
 #include "methods/kit/counting/crossing_geometry.hpp"
 
-#include <airlight/method.hpp>
-#include <airlight/scene.hpp>
-#include <string>
-#include <utility>
-#include <vector>
-
 namespace airlight::methods {
 
 class Silhouettes final : public kit::CasterCrossings {

@@ -119,10 +119,10 @@ void LightVolumeMesh::allocate(int grid, int layers, GLsizei triangles, int ligh
 
 void LightVolumeMesh::build(const SceneFrame& frame, gpu::PassTimer& timer) {
   gpu::ScopedPass pass(timer, "volume");
-  build(frame);
+  build_lights(frame);
 }
 
-void LightVolumeMesh::build(const SceneFrame& frame) {
+void LightVolumeMesh::build_lights(const SceneFrame& frame) {
   auto start = std::chrono::steady_clock::now();
   if (wall_clock_) {
     glFinish();

@@ -134,7 +134,7 @@ public:
   GLsizei max_records_per_binding() const { return max_records_; }
 
 private:
-  void build(const SceneFrame& frame);
+  void build_lights(const SceneFrame& frame);
   void build_light(int light, Kind kind, const SceneFrame& frame);
   void allocate(int grid, int layers, GLsizei triangles, int lights);
 
