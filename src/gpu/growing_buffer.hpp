@@ -6,7 +6,7 @@
 #include "gpu/gl.hpp"
 
 #include <algorithm>
-#include <vector>
+#include <span>
 
 namespace airlight::gpu {
 
@@ -23,7 +23,7 @@ public:
     return true;
   }
   // `items` at the buffer's start (reserve's room first, and its answer).
-  bool assign(const std::vector<T>& items) {
+  bool assign(std::span<const T> items) {
     const bool made = reserve(items.size());
     if (!items.empty()) glNamedBufferSubData(buffer_.id(), 0, items.size() * sizeof(T), items.data());
     return made;

@@ -39,14 +39,14 @@ set(ALLOW_methods/kit/engine       methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/method       methods/kit/engine methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/march        methods/kit/sampling methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/gamma        methods/kit/sampling methods/kit/frame ${KIT_BASE})
-set(ALLOW_methods/kit/counting     methods/kit/gamma methods/kit/sampling methods/kit/frame ${KIT_BASE})
+set(ALLOW_methods/kit/counting     methods/kit/method methods/kit/gamma methods/kit/sampling methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/light_volume methods/kit/counting methods/kit/method methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/planes       methods/kit/method methods/kit/gamma methods/kit/sampling methods/kit/frame
                                    reference ${KIT_BASE})
 set(KIT_ROOMS frame sampling engine method march gamma counting light_volume planes)
 list(TRANSFORM KIT_ROOMS PREPEND methods/kit/ OUTPUT_VARIABLE KIT)
 # What the tests share, on every room; and a test beside the code it tests
-# (*_test.cpp, a method's *_quality.cpp) may include it and every room, as the
+# (*_test.cpp and its *_test_support.{hpp,cpp}, a method's *_quality.cpp) may include it and every room, as the
 # suites link the whole kit.
 set(ALLOW_methods/kit/testing      ${KIT} ${BASE})
 set(ALLOW_test                     methods/kit/testing ${KIT} ${BASE})
@@ -139,7 +139,7 @@ foreach(file IN LISTS files)
     continue()
   endif()
   set(allowed ${ALLOW_${rule}})
-  if(file MATCHES "_(test|quality)\\.cpp$")
+  if(file MATCHES "_(test|quality)\\.cpp$|_test_support\\.(hpp|cpp)$")
     list(APPEND allowed ${ALLOW_test})
   endif()
 

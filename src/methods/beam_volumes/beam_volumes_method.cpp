@@ -1,10 +1,7 @@
 #include "methods/beam_volumes/lit_pyramids.hpp"
-#include "methods/kit/method/gpu_method.hpp"
-#include "methods/kit/counting/lit_interval_pass.hpp"
+#include "methods/beam_volumes/signed_faces.hpp"
+#include "methods/kit/counting/crossing_method.hpp"
 #include "methods/kit/method/memory_needs.hpp"
-
-#include "gpu/growing_buffer.hpp"
-#include "gpu/program.hpp"
 #include "methods/kit/method/registry.hpp"
 
 #include <memory>
@@ -16,77 +13,15 @@ namespace {
 // visible set (lit_pyramids.cpp), then per pixel Γ over each light's lit
 // intervals — counted from their faces' crossings by the kit's lit-interval
 // pass (accumulate=intervals), or Nilsson's ±Γ(0 → z) of each face blended
-// into a float target (accumulate=signed, signed.frag.glsl). No shadow map.
-class BeamVolumes final : public kit::GpuMethod {
-public:
-  enum class Accumulate { intervals, signed_faces };  // the `accumulate` setting's choices, in order
-  explicit BeamVolumes(const Settings& s)
-      : GpuMethod(s), intervals_(s), signed_(s.option<Accumulate>("accumulate") == Accumulate::signed_faces) {}
+// into a float target (accumulate=signed, signed_faces.hpp). No shadow map.
+enum class Accumulate { intervals, signed_faces };  // the `accumulate` setting's choices, in order
 
-private:
-  void prepare_airlight(const Scene& scene) override {
-    pyramids_.prepare(scene);
-    intervals_.prepare();
-    fbo_ = gpu::make_framebuffer();
-    no_vertices_ = gpu::make_vertex_array();
-  }
-
-  void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
-    pyramids_.build(frame.inputs());
-    if (!signed_) {
-      intervals_.run(frame, pyramids_.triangles(), pyramids_.eye_counts(), target, timer);
-      return;
-    }
-    gpu::ScopedPass pass(timer, "airlight");
-    draw_signed(frame, target);
-  }
-
-  // Every face's ±Γ(0 → z) added into the cleared target (GL_ONE, GL_ONE),
-  // no depth test or culling, no near or far clipping.
-  void draw_signed(const kit::SceneFrame& frame, const gpu::Texture& target) {
-    const std::vector<kit::CountedTriangle>& faces = pyramids_.triangles();
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, zero);
-    if (faces.empty()) return;
-    faces_.assign(faces);
-    const gpu::Program& program = gpu::cached_program(
-        {{GL_VERTEX_SHADER, "methods/kit/counting/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/beam_volumes/signed.frag.glsl"}},
-        frame.defines() + kit::lit_interval_defines());
-    glUseProgram(program.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kit::binding::first_free_storage, faces_.id());
-    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, frame.width(), frame.height());
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
-    glEnable(GL_DEPTH_CLAMP);
-    glBindVertexArray(no_vertices_.id());
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * faces.size()));
-    glDisable(GL_DEPTH_CLAMP);
-    glDisable(GL_BLEND);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  }
-
-  bool uses_shadow_maps() const override { return false; }
-
-  std::vector<std::pair<std::string, double>> stats() const override {
-    auto s = pyramids_.stats();
-    if (!signed_) {
-      const auto more = intervals_.stats();
-      s.insert(s.end(), more.begin(), more.end());
-    }
-    return s;
-  }
-
-  LitPyramids pyramids_;
-  kit::LitIntervalPass intervals_;
-  bool signed_;
-  gpu::Framebuffer fbo_;
-  gpu::VertexArray no_vertices_;
-  gpu::GrowingBuffer<kit::CountedTriangle> faces_;
-};
+std::unique_ptr<Method> beam_volumes(const Settings& s) {
+  auto pyramids = std::make_unique<LitPyramids>();
+  if (s.option<Accumulate>("accumulate") == Accumulate::intervals)
+    return std::make_unique<kit::CrossingMethod>(s, std::move(pyramids));
+  return std::make_unique<kit::CrossingMethod>(s, std::move(pyramids), std::make_unique<SignedFaces>());
+}
 
 // Per light, the beam tree over every caster triangle, its visible pieces and
 // their pyramids' faces, about four a triangle in one buffer (measured:
@@ -120,7 +55,7 @@ MethodInfo beam_volumes_method() {
           "exact volumetric shadows from a beam tree per light (a BSP tree of planes through the light, any "
           "polygon order): the pyramids between the light and the polygons it sees first, backplate included, "
           "bound its lit region; per pixel the closed-form Γ summed over the lit intervals",
-          kit::gpu_settings(std::move(own)), kit::create<BeamVolumes>(),
+          kit::gpu_settings(std::move(own)), beam_volumes,
           224, kit::gpu_memory(beam_volumes_memory), {.caster_triangles = true},
           {{"exact", {"samples=512"}, Trial::Measure::worst_pixel, 0.02,
             "exact shadows from the beam trees of the casters' triangles and Γ in closed form (512 points per "

@@ -162,7 +162,7 @@ TEST(LitPyramids, NoFaceReachesAPointLight) {
   pyramids.build(frame_inputs(scene, width, height));
   const glm::vec4 light(scene.lights[0].position, 1.0f);
   int at_light = 0;
-  for (const kit::CountedTriangle& t : pyramids.triangles())
+  for (const kit::CountedTriangle& t : pyramids.triangles().on_cpu)
     at_light += std::count(std::begin(t.corners), std::end(t.corners), light) > 0;
   std::printf("%zu faces, %d at the light\n", pyramids.triangles().size(), at_light);
   EXPECT_EQ(at_light, 0);

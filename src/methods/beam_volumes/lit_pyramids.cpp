@@ -5,7 +5,6 @@
 #include "methods/kit/frame/view_reach.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <glm/geometric.hpp>
@@ -44,11 +43,9 @@ double caster_reach(const std::vector<geometry::BeamPolygon>& polygons, const Li
 
 }  // namespace
 
-void LitPyramids::prepare(const Scene& scene) {
+void LitPyramids::prepare_casters(const Scene& scene, const std::vector<int>& casters) {
   casters_.clear();
-  for (size_t m = 0; m < scene.meshes.size(); ++m)
-    if (scene.meshes[m].casts_shadows)
-      casters_.push_back({static_cast<int>(m), scene.meshes[m].positions, scene.meshes[m].triangles});
+  for (const int m : casters) casters_.push_back({m, scene.meshes[m].positions, scene.meshes[m].triangles});
 }
 
 std::vector<geometry::BeamPolygon> LitPyramids::world_polygons(const FrameInputs& inputs) const {
@@ -119,9 +116,7 @@ void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& 
     add_face(t.corners[0], t.corners[1], t.corners[2], index, t.weight);
 }
 
-void LitPyramids::build(const FrameInputs& inputs) {
-  const auto start = std::chrono::steady_clock::now();
-  triangles_.clear();
+void LitPyramids::add_triangles(const FrameInputs& inputs) {
   eye_ = {std::vector<int>(inputs.lights.size(), 1), {}};
   nodes_ = visible_ = 0;
   const std::vector<geometry::BeamPolygon> polygons = world_polygons(inputs);
@@ -146,7 +141,6 @@ void LitPyramids::build(const FrameInputs& inputs) {
     for (const geometry::BeamPolygon& p : tree.visible_set())
       if (inside_pyramid(p, light, beside)) eye_.counts[i] = 0;
   }
-  build_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::vector<std::pair<std::string, double>> LitPyramids::stats() const {

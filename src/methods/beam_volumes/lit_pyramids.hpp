@@ -7,32 +7,22 @@
 // triangles the kit's lit-interval pass counts.
 #include "geometry/beam_tree.hpp"
 #include "geometry/conforming_set.hpp"
-#include "methods/kit/counting/lit_interval_pass.hpp"
-
-#include <airlight/method.hpp>
-#include <airlight/scene.hpp>
-#include <string>
-#include <utility>
-#include <vector>
+#include "methods/kit/counting/crossing_geometry.hpp"
 
 namespace airlight::methods {
 
-class LitPyramids {
+class LitPyramids final : public kit::CasterCrossings {
 public:
-  // The casters' triangles (Mesh::casts_shadows), in object space: copied, so
-  // that the caller need not keep the scene after prepare() (docs/design.md §3).
-  void prepare(const Scene& scene);
-
-  // The frame's beam trees (timed as build_s) and pyramids, and each light's
-  // count at the eye: 0 where the eye is lit, 1 where not.
-  void build(const FrameInputs& inputs);
-  const std::vector<kit::CountedTriangle>& triangles() const { return triangles_; }
-  const kit::EyeCounts& eye_counts() const { return eye_; }
-
   // beam_tree_nodes, visible_polygons, pyramid_faces, build_s.
-  std::vector<std::pair<std::string, double>> stats() const;
+  std::vector<std::pair<std::string, double>> stats() const override;
 
 private:
+  // The casters' triangles, in object space: copied, so that the caller need
+  // not keep the scene after prepare() (docs/design.md §3).
+  void prepare_casters(const Scene& scene, const std::vector<int>& casters) override;
+  // The frame's beam trees and pyramids, and each light's count at the eye: 0
+  // where the eye is lit, 1 where not.
+  void add_triangles(const FrameInputs& inputs) override;
   std::vector<geometry::BeamPolygon> world_polygons(const FrameInputs& inputs) const;
   void add_pyramids(const geometry::ConformingSet& set, const Light& light, int index, double reach, double epsilon);
   void add_face(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, int index, int weight);
@@ -43,9 +33,6 @@ private:
     std::vector<glm::uvec3> triangles;
   };
   std::vector<Caster> casters_;
-  std::vector<kit::CountedTriangle> triangles_;
-  kit::EyeCounts eye_;
-  double build_s_ = 0.0;
   int nodes_ = 0, visible_ = 0;
 };
 

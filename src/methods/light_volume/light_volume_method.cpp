@@ -1,6 +1,5 @@
-#include "methods/kit/method/gpu_method.hpp"
+#include "methods/kit/counting/crossing_method.hpp"
 #include "methods/kit/light_volume/light_volume_mesh.hpp"
-#include "methods/kit/counting/lit_interval_pass.hpp"
 #include "methods/kit/method/memory_needs.hpp"
 #include "methods/kit/method/registry.hpp"
 
@@ -9,49 +8,23 @@
 namespace airlight::methods {
 namespace {
 
-// The exact integration over a light volume that Kingston's conclusion
-// suggests and Billeter, Sintorn & Assarsson (HPG 2010) published: each
-// light's shadow map becomes a closed mesh bounding its lit region
-// (kit/light_volume_mesh.hpp, built on the GPU every frame), whose faces the
-// kit's lit-interval pass counts along every view ray, and Γ is summed over
-// the lit intervals. Nothing is marched: exact up to the map's resolution,
-// and the cost does not grow with the casters' triangles.
-class LightVolume final : public kit::GpuMethod {
-public:
-  explicit LightVolume(const Settings& s)
-      : GpuMethod(s), mesh_(s.integer("volume_resolution"), kit::LightVolumeMesh::Depth::texel), intervals_(s) {}
-
-private:
-  void prepare_airlight(const Scene&) override {
-    mesh_.prepare();
-    intervals_.prepare();
-  }
-
-  void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
-    {
-      gpu::ScopedPass pass(timer, "volume");
-      mesh_.build(frame);
-    }
-    intervals_.run(frame, mesh_.triangles(), mesh_.triangle_count(), {mesh_.eye_counts(), {}}, target, timer);
-  }
-
-  std::vector<std::pair<std::string, double>> stats() const override {
-    std::vector<std::pair<std::string, double>> s{{"volume_triangles", static_cast<double>(mesh_.triangle_count())},
-                                                  {"volume_s", mesh_.seconds()}};
-    const auto more = intervals_.stats();
-    s.insert(s.end(), more.begin(), more.end());
-    return s;
-  }
-
-  kit::LightVolumeMesh mesh_;
-  kit::LitIntervalPass intervals_;
-};
-
 // The meshes of every light's map, and the crossing pool beyond its default.
 std::vector<MemoryNeed> light_volume_memory(const Scene& scene, const Settings& s, int width, int height) {
   std::vector<MemoryNeed> needs = kit::light_volume_mesh_needs(scene, s, kit::LightVolumeMesh::Depth::texel);
   for (MemoryNeed& need : kit::crossing_pool_needs(s, width, height)) needs.push_back(std::move(need));
   return needs;
+}
+
+// The exact integration over a light volume that Kingston's conclusion
+// suggests and Billeter, Sintorn & Assarsson (HPG 2010) published: each
+// light's shadow map becomes a closed mesh bounding its lit region
+// (kit/light_volume/light_volume_mesh.hpp, built on the GPU every frame), whose
+// faces the kit's lit-interval pass counts along every view ray, and Γ is
+// summed over the lit intervals. Nothing is marched: exact up to the map's
+// resolution, and the cost does not grow with the casters' triangles.
+std::unique_ptr<Method> light_volume(const Settings& s) {
+  return std::make_unique<kit::CrossingMethod>(
+      s, std::make_unique<kit::LightVolumeMesh>(s.integer("volume_resolution"), kit::LightVolumeMesh::Depth::texel));
 }
 
 MethodInfo light_volume_method() {
@@ -61,7 +34,7 @@ MethodInfo light_volume_method() {
           "exact volumetric shadows up to the shadow map's resolution: each light's map made a closed mesh of its "
           "lit region on the GPU every frame, the mesh's crossings with each pixel's ray counted into lit "
           "intervals, the closed-form Γ summed over them; nothing marched, no cost per caster triangle",
-          kit::gpu_settings(std::move(own)), kit::create<LightVolume>(),
+          kit::gpu_settings(std::move(own)), light_volume,
           224, kit::gpu_memory(light_volume_memory), {},
           {{"grid at the map's resolution",
             {"shadow_resolution=256", "volume_resolution=256", "samples=512"},

@@ -1,46 +1,13 @@
-#include "methods/kit/method/gpu_method.hpp"
-#include "methods/kit/counting/lit_interval_pass.hpp"
+#include "methods/kit/counting/crossing_method.hpp"
 #include "methods/kit/method/memory_needs.hpp"
-#include "methods/shadow_planes/silhouettes.hpp"
-
 #include "methods/kit/method/registry.hpp"
+#include "methods/shadow_planes/silhouettes.hpp"
 
 #include <memory>
 
 namespace airlight::methods {
 
 namespace {
-
-// Biri, Arquès & Michelin 2006: the casters' shadow planes (silhouettes.cpp),
-// their crossings with each pixel's ray and Γ over each light's lit intervals
-// (the kit's lit-interval pass). No shadow map: the shadows are the casters' own edges.
-class ShadowPlanes final : public kit::GpuMethod {
-public:
-  explicit ShadowPlanes(const Settings& s) : GpuMethod(s), intervals_(s) {}
-
-private:
-  void prepare_airlight(const Scene& scene) override {
-    silhouettes_.prepare(scene);
-    intervals_.prepare();
-  }
-
-  void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
-    silhouettes_.build(frame.inputs());
-    intervals_.run(frame, silhouettes_.triangles(), silhouettes_.eye_counts(), target, timer);
-  }
-
-  bool uses_shadow_maps() const override { return false; }
-
-  std::vector<std::pair<std::string, double>> stats() const override {
-    auto s = silhouettes_.stats();
-    const auto more = intervals_.stats();
-    s.insert(s.end(), more.begin(), more.end());
-    return s;
-  }
-
-  Silhouettes silhouettes_;
-  kit::LitIntervalPass intervals_;
-};
 
 // Up to two counted triangles per caster edge and light (silhouettes.cpp), and
 // the crossing pool beyond its default.
@@ -57,6 +24,9 @@ std::vector<MemoryNeed> shadow_planes_memory(const Scene& scene, const Settings&
 // every edge a plane, renders within 120 s and 4 GiB at 256×192 up to about this many.
 constexpr double max_edges = 1e6;
 
+// Biri, Arquès & Michelin 2006: the casters' shadow planes (silhouettes.cpp),
+// their crossings with each pixel's ray and Γ over each light's lit intervals
+// (the kit's lit-interval pass). No shadow map: the shadows are the casters' own edges.
 MethodInfo shadow_planes_method() {
   using T = SettingSpec::Type;
   std::vector<SettingSpec> own = kit::lit_interval_settings();
@@ -71,7 +41,7 @@ MethodInfo shadow_planes_method() {
           "summed, piece by piece through bounded volumes (Biri §5.2); gobos and the light's leg through other "
           "volumes by a sampled ratio",
           kit::gpu_settings(std::move(own)),
-          kit::create<ShadowPlanes>(),
+          [](const Settings& s) { return std::make_unique<kit::CrossingMethod>(s, std::make_unique<Silhouettes>()); },
           224, kit::gpu_memory(shadow_planes_memory), {.caster_triangles = true},
           {{"exact", {"samples=512"}, Trial::Measure::worst_pixel, 0.02,
             "exact shadows from the casters' own triangles and Γ in closed form (512 points per interval where "

@@ -4,7 +4,6 @@
 #include "methods/kit/frame/model_of.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -12,13 +11,10 @@
 #include <glm/vec4.hpp>
 
 namespace airlight::methods {
-void Silhouettes::prepare(const Scene& scene) {
+void Silhouettes::prepare_casters(const Scene& scene, const std::vector<int>& casters) {
   casters_.clear();
-  for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    const Mesh& mesh = scene.meshes[m];
-    if (!mesh.casts_shadows) continue;
-    casters_.push_back({static_cast<int>(m), geometry::build_topology(mesh.positions, mesh.triangles), {}});
-  }
+  for (const int m : casters)
+    casters_.push_back({m, geometry::build_topology(scene.meshes[m].positions, scene.meshes[m].triangles), {}});
 }
 
 void Silhouettes::move_casters(const FrameInputs& inputs) {
@@ -97,10 +93,8 @@ double near_reach(const FrameInputs& inputs) {
 // Per caster its welded positions moved by the frame's transform, then per
 // light the planes of every caster and the eye's count (Biri §5.1.1: the
 // silhouettes depend on the light and the caster, so both are rebuilt every frame).
-void Silhouettes::build(const FrameInputs& inputs) {
-  const auto start = std::chrono::steady_clock::now();
+void Silhouettes::add_triangles(const FrameInputs& inputs) {
   move_casters(inputs);
-  triangles_.clear();
   eye_ = {std::vector<int>(inputs.lights.size(), 0), {}};
   plane_count_ = silhouette_edges_ = boundary_edges_ = loops_ = 0;
   const glm::dvec3 eye(inputs.camera.position);
@@ -123,8 +117,11 @@ void Silhouettes::build(const FrameInputs& inputs) {
     eye_.planes.insert(eye_.planes.end(), at_eye.begin(), at_eye.end());
     eye_.counts[i] = count_at(light, glm::vec3(beside));
   }
-  build_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (const Light& light : inputs.lights)  // for the report, outside build_s: it allocates
+}
+
+void Silhouettes::build(const kit::SceneFrame& frame, gpu::PassTimer& timer) {
+  CasterCrossings::build(frame, timer);
+  for (const Light& light : frame.inputs().lights)  // for the report, outside build_s: it allocates
     for (const Caster& c : casters_) loops_ += geometry::shadow_plane_loops(c.topology, c.world, geometry::light_origin(light));
 }
 

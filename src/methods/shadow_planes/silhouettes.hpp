@@ -6,32 +6,25 @@
 // and the casters' own triangles where a view ray may cross them before it
 // reaches the near plane (add_caps).
 #include "geometry/shadow_edges.hpp"
-#include "methods/kit/counting/lit_interval_pass.hpp"
-
-#include <airlight/method.hpp>
-#include <airlight/scene.hpp>
-#include <string>
-#include <utility>
-#include <vector>
+#include "methods/kit/counting/crossing_geometry.hpp"
 
 namespace airlight::methods {
 
-class Silhouettes {
+class Silhouettes final : public kit::CasterCrossings {
 public:
-  // Welds each shadow caster (Mesh::casts_shadows) and finds its edges' triangles.
-  void prepare(const Scene& scene);
-
-  // The frame's planes (timed as build_s) and each light's count at the eye.
-  void build(const FrameInputs& inputs);
-  const std::vector<kit::CountedTriangle>& triangles() const { return triangles_; }
-  const kit::EyeCounts& eye_counts() const { return eye_; }
+  // The frame's planes and eye counts, then the loops the report counts.
+  void build(const kit::SceneFrame& frame, gpu::PassTimer& timer) override;
 
   // Counters for the report: caster triangles, planes, silhouette and
   // boundary edges, loops, build_s, and per caster whether it is closed (its
   // planes are its silhouette) or open (the edges of its triangles' own volumes).
-  std::vector<std::pair<std::string, double>> stats() const;
+  std::vector<std::pair<std::string, double>> stats() const override;
 
 private:
+  // Welds each caster and finds its edges' triangles.
+  void prepare_casters(const Scene& scene, const std::vector<int>& casters) override;
+  // The frame's planes and each light's count at the eye.
+  void add_triangles(const FrameInputs& inputs) override;
   struct Caster {
     int mesh = 0;
     geometry::CasterTopology topology;
@@ -45,9 +38,6 @@ private:
 
   std::vector<Caster> casters_;
   std::vector<geometry::ShadowPlane> planes_;  // of one light, reused
-  std::vector<kit::CountedTriangle> triangles_;
-  kit::EyeCounts eye_;
-  double build_s_ = 0.0;
   int plane_count_ = 0, silhouette_edges_ = 0, boundary_edges_ = 0, loops_ = 0;
 };
 

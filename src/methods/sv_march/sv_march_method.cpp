@@ -36,17 +36,14 @@ public:
         march_(kit::MarchSettings::from(s), "methods/sv_march/sv_march.comp.glsl", march_defines(s)) {}
 
 private:
-  void prepare_airlight(const Scene&) override {
-    shell_.prepare();
+  void prepare_airlight(const Scene& scene) override {
+    shell_.prepare(scene);
     draw_.prepare();
     march_.prepare();
   }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
-    {
-      gpu::ScopedPass pass(timer, "volume");
-      shell_.build(frame);
-    }
+    shell_.build(frame, timer);
     {
       gpu::ScopedPass pass(timer, "bounds");
       draw_bounds(frame);
@@ -76,14 +73,13 @@ private:
                                                       frame.defines() + kit::lit_interval_defines() +
                                                           kit::CountedDraw::defines());
     glBindImageTexture(0, bounds_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-    fragments_ = draw_.draw(frame, program, shell_.triangles(), shell_.triangle_count());
+    fragments_ = draw_.draw(frame, program, *shell_.triangles().on_gpu, shell_.triangle_count());
   }
 
   std::vector<std::pair<std::string, double>> stats() const override {
-    return {{"volume_triangles", static_cast<double>(shell_.triangle_count())},
-            {"volume_s", shell_.seconds()},
-            {"fragments", fragments_},
-            {"light_samples", march_.light_samples()}};
+    std::vector<std::pair<std::string, double>> s = shell_.stats();
+    s.insert(s.end(), {{"fragments", fragments_}, {"light_samples", march_.light_samples()}});
+    return s;
   }
 
   kit::LightVolumeMesh shell_;

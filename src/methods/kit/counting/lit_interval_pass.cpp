@@ -61,22 +61,14 @@ void LitIntervalPass::allocate_pool(size_t nodes) {
   nodes_ = gpu::make_buffer(node_capacity_ * node_bytes, nullptr);
 }
 
-void LitIntervalPass::run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles,
-                          const EyeCounts& eye, const gpu::Texture& target, gpu::PassTimer& timer) {
+void LitIntervalPass::run(const SceneFrame& frame, const CrossingGeometry& geometry, const gpu::Texture& target,
+                          gpu::PassTimer& timer) {
+  const EyeCounts eye = geometry.eye_counts();  // before the pass: the light volume mesh's are read from the GPU
+  const CountedTriangles triangles = geometry.triangles();
   {
     gpu::ScopedPass pass(timer, "crossings");
-    triangles_.assign(triangles);
-    list_crossings(frame, triangles_.buffer(), triangles.size());
-  }
-  gpu::ScopedPass pass(timer, "airlight");
-  resolve(frame, eye, target);
-}
-
-void LitIntervalPass::run(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count,
-                          const EyeCounts& eye, const gpu::Texture& target, gpu::PassTimer& timer) {
-  {
-    gpu::ScopedPass pass(timer, "crossings");
-    list_crossings(frame, triangles, triangle_count);
+    if (!triangles.on_gpu) triangles_.assign(triangles.on_cpu);
+    list_crossings(frame, triangles.on_gpu ? *triangles.on_gpu : triangles_.buffer(), triangles.size());
   }
   gpu::ScopedPass pass(timer, "airlight");
   resolve(frame, eye, target);

@@ -1,20 +1,23 @@
 #pragma once
-// Lit intervals by counting crossings (lit_intervals.glsl): a method hands in,
-// per frame, the triangles that bound each light's lit region with their
-// weights, and each light's count at the eye; the pass draws their crossings
-// with every pixel's view ray into per-pixel lists ("crossings") and sums Γ
-// over each light's lit intervals into the target ("airlight",
-// lit_intervals.comp.glsl). Run by shadow_planes, beam_volumes (but for its
-// signed sum) and light_volume; sv_march draws its shells with CountedDraw alone.
+// Lit intervals by counting crossings (lit_intervals.glsl): a geometry hands
+// in, per frame, the triangles that bound each light's lit region with their
+// weights, and each light's count at the eye (CrossingGeometry); the pass draws
+// their crossings with every pixel's view ray into per-pixel lists
+// ("crossings") and sums Γ over each light's lit intervals into the target
+// ("airlight", lit_intervals.comp.glsl). The pass of shadow_planes,
+// beam_volumes and light_volume (CrossingMethod); sv_march draws its shell
+// with CountedDraw.
 #include "gpu/gl.hpp"
 #include "gpu/growing_buffer.hpp"
 #include "gpu/timer.hpp"
 #include "methods/kit/counting/counted_draw.hpp"
-#include "methods/kit/counting/counted_triangles.hpp"
+#include "methods/kit/counting/crossing_geometry.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
 
 #include <airlight/method.hpp>
+#include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
+#include <glm/vec4.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,27 +34,23 @@ std::vector<SettingSpec> lit_interval_settings();
 // The crossing pool at width × height: its bytes beyond the default capacity,
 // which the methods' bytes_per_pixel already holds, and its buffer.
 std::vector<MemoryNeed> crossing_pool_needs(const Settings& settings, int width, int height);
-
-class LitIntervalPass {
+class LitIntervalPass final : public CrossingPass {
 public:
   explicit LitIntervalPass(const Settings& settings);
 
-  // Needs a current context.
-  void prepare();
+  void prepare() override;
 
-  // The crossings of `triangles` with the frame's pixel rays, then Σ Γ over
-  // each light's lit intervals into `target`; the frame must be bound.
-  void run(const SceneFrame& frame, const std::vector<CountedTriangle>& triangles, const EyeCounts& eye,
-           const gpu::Texture& target, gpu::PassTimer& timer);
-  // The same with the triangles already on the GPU (a mesh a compute pass built).
-  void run(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count, const EyeCounts& eye,
-           const gpu::Texture& target, gpu::PassTimer& timer);
+  // The crossings of the geometry's triangles (uploaded first if on the CPU)
+  // with the frame's pixel rays, then Σ Γ over each light's lit intervals
+  // from its eye counts into `target`.
+  void run(const SceneFrame& frame, const CrossingGeometry& geometry, const gpu::Texture& target,
+           gpu::PassTimer& timer) override;
 
   // crossings (drawn into the lists), fragments (shaded by the last draw of
   // the triangles; 0 without pipeline statistics), redraws (the pool grown
   // this frame), loop_limited (pixels llvmpipe's loop limit cut short) and
   // passes (of the resolve: more than one where that limit was met).
-  std::vector<std::pair<std::string, double>> stats() const;
+  std::vector<std::pair<std::string, double>> stats() const override;
 
 private:
   void list_crossings(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
@@ -63,7 +62,7 @@ private:
 
   double capacity_per_pixel_;
   int samples_;
-  gpu::GrowingBuffer<CountedTriangle> triangles_;  // run()'s from the CPU
+  gpu::GrowingBuffer<CountedTriangle> triangles_;  // a geometry's from the CPU
   gpu::Buffer nodes_, node_count_;
   size_t node_capacity_ = 0;
   gpu::Texture heads_;

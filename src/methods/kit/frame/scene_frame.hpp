@@ -78,6 +78,10 @@ public:
   int width() const { return inputs_.width; }
   int height() const { return inputs_.height; }
   int light_count() const { return static_cast<int>(inputs_.lights.size()); }
+  // Per light, this frame's shadow map kind (shadow_none, shadow_map or shadow_cube: shadow_projection.hpp).
+  const std::vector<int>& shadow_kinds() const { return shadow_kinds_; }
+  // Texels per side of this frame's shadow maps and cube faces.
+  int shadow_resolution() const { return shadow_resolution_; }
   const Texture& distance() const { return distance_; }
   // DEPTH_COMPONENT32F of the G-buffer pass (1 where no surface is hit), for
   // methods that rasterize with the depth test against the scene.
@@ -122,6 +126,7 @@ private:
   FrameInputs inputs_;
   std::string defines_;
   std::vector<ShadowDraw> shadow_draws_;
+  std::vector<int> shadow_kinds_;  // per light
   ShadowLayout shadow_layout_;
   std::vector<const Image*> gobo_images_;  // per gobo layer
   std::vector<Bounds> caster_bounds_;  // per mesh, in object space (caster_bounds)

@@ -210,6 +210,7 @@ std::vector<SceneLight> SceneFrame::upload_lights(const EngineFrame* engine, int
   const Bounds bounds = world_bounds(caster_bounds_, inputs_.transforms);
   std::vector<SceneLight> records;
   shadow_draws_.clear();
+  shadow_kinds_.clear();
   ShadowLayout layout;
   for (const Light& light : inputs_.lights) {
     const int index = static_cast<int>(records.size());
@@ -235,6 +236,7 @@ std::vector<SceneLight> SceneFrame::upload_lights(const EngineFrame* engine, int
       shadow_draws_.push_back({index, false, g.shadow_layer, p.matrix, theirs});
     }
     records.push_back(g);
+    shadow_kinds_.push_back(g.shadow_kind);
   }
   update(lights_, records);
   if (!(layout == shadow_layout_) || resolution != shadow_resolution_) allocate_shadow_maps(layout, resolution);

@@ -8,9 +8,7 @@
 #include "methods/kit/method/memory_needs.hpp"
 #include "methods/kit/frame/shadows/shadow_projection.hpp"
 
-#include <airlight/error.hpp>
 #include <algorithm>
-#include <cstring>
 #include <glm/geometric.hpp>
 #include <string>
 
@@ -27,34 +25,21 @@ constexpr GLsizeiptr record_bytes = sizeof(CountedTriangle);
 constexpr GLsizeiptr word_bytes = 16;  // a uvec4: records are five
 static_assert(sizeof(CountedTriangle) == 5 * word_bytes, "CountedTriangle is five vec4s (lit_intervals.glsl)");
 
-enum Pass { cells_pass, grid_vertices_pass, extra_vertices_pass, grid_triangles_pass, extra_triangles_pass, eye_pass, seams_pass };
+// The programs of the build, each including light_volume_mesh.glsl.
+constexpr const char* cell_depths = "methods/kit/light_volume/cell_depths.comp.glsl";
+constexpr const char* grid_vertices = "methods/kit/light_volume/grid_vertices.comp.glsl";
+constexpr const char* seam_vertices = "methods/kit/light_volume/seam_vertices.comp.glsl";
+constexpr const char* extra_vertices = "methods/kit/light_volume/extra_vertices.comp.glsl";
+constexpr const char* grid_triangles = "methods/kit/light_volume/grid_triangles.comp.glsl";
+constexpr const char* extra_triangles = "methods/kit/light_volume/extra_triangles.comp.glsl";
+constexpr const char* eye_count = "methods/kit/light_volume/eye_count.comp.glsl";
 
-// The first `count` values of "#define NAME int[](a, b, …)" in the frame's defines.
-std::vector<int> defined_ints(const std::string& defines, const std::string& name, int count) {
-  const std::string key = "#define " + name + " int[](";
-  const size_t at = defines.find(key);
-  if (at == std::string::npos) throw Failure("light volume mesh: the frame's defines have no " + name);
-  std::vector<int> values;
-  const char* p = defines.c_str() + at + key.size();
-  while (static_cast<int>(values.size()) < count) {
-    char* end = nullptr;
-    values.push_back(static_cast<int>(std::strtol(p, &end, 10)));
-    if (end == p) throw Failure("light volume mesh: cannot read " + name + " from the frame's defines");
-    p = end;
-    while (*p == ',' || *p == ' ') ++p;
-  }
-  return values;
-}
-
-// The width of the texture bound to `unit` as `target` (its query enum).
-int bound_texture_size(GLuint unit, GLenum binding_query) {
-  GLint active = 0, id = 0, width = 0;
-  glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-  glActiveTexture(GL_TEXTURE0 + unit);
-  glGetIntegerv(binding_query, &id);
-  glActiveTexture(static_cast<GLenum>(active));
-  if (id) glGetTextureLevelParameteriv(static_cast<GLuint>(id), 0, GL_TEXTURE_WIDTH, &width);
-  return width;
+// The mesh a light gets from its shadow map's kind (shadow_projection.hpp).
+LightVolumeMesh::Kind kind_of(int shadow, LightType type) {
+  using Kind = LightVolumeMesh::Kind;
+  if (shadow == shadow_cube) return Kind::cube;
+  if (shadow != shadow_map) return Kind::none;
+  return type == LightType::directional ? Kind::directional : Kind::spot;
 }
 
 GLsizei triangles_of(LightVolumeMesh::Kind kind, int r, LightVolumeMesh::Depth depth) {
@@ -91,7 +76,7 @@ std::vector<SettingSpec> light_volume_settings(int default_resolution) {
 
 LightVolumeMesh::LightVolumeMesh(int resolution, Depth depth) : resolution_(resolution), depth_(depth) {}
 
-void LightVolumeMesh::prepare() {
+void LightVolumeMesh::prepare(const Scene&) {
   GLint64 block = 0;
   GLint align = 16;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
@@ -120,24 +105,24 @@ void LightVolumeMesh::allocate(int grid, int layers, GLsizei triangles, int ligh
   eye_counts_.reserve(static_cast<size_t>(lights));
 }
 
-void LightVolumeMesh::build(const SceneFrame& frame) {
+void LightVolumeMesh::build(const SceneFrame& frame, gpu::PassTimer& timer) {
+  gpu::ScopedPass pass(timer, "volume");
+  build_lights(frame);
+}
+
+void LightVolumeMesh::build_lights(const SceneFrame& frame) {
   gpu::ScopedPass pass(timer_.emplace(), "volume");
   frame.bind();
   const int lights = frame.light_count();
-  const std::vector<int> types = defined_ints(frame.defines(), "LIGHT_TYPES", lights);
-  const std::vector<int> shadows = defined_ints(frame.defines(), "LIGHT_SHADOWS", lights);
   ranges_.assign(static_cast<size_t>(lights), {});
   bool maps = false, cubes = false;
   for (int i = 0; i < lights; ++i) {
-    Kind& kind = ranges_[static_cast<size_t>(i)].kind;
-    if (shadows[i] == shadow_cube) kind = Kind::cube;
-    else if (shadows[i] == shadow_map)
-      kind = types[i] == static_cast<int>(LightType::directional) ? Kind::directional : Kind::spot;
+    const size_t light = static_cast<size_t>(i);
+    const Kind kind = ranges_[light].kind = kind_of(frame.shadow_kinds()[light], frame.inputs().lights[light].type);
     maps = maps || kind == Kind::spot || kind == Kind::directional;
     cubes = cubes || kind == Kind::cube;
   }
-  map_size_ = std::max(maps ? bound_texture_size(binding::shadow_maps, GL_TEXTURE_BINDING_2D_ARRAY) : 0,
-                       cubes ? bound_texture_size(binding::shadow_cubes, GL_TEXTURE_BINDING_CUBE_MAP_ARRAY) : 0);
+  map_size_ = maps || cubes ? frame.shadow_resolution() : 0;
   grid_ = std::max(1, std::min(resolution_, map_size_));
   if (resolution_ > map_size_ && map_size_ > 0 && map_size_ != clamped_to_) {  // said once per map size
     clamped_to_ = map_size_;
@@ -191,11 +176,10 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
                              "\n#define BINDING_VOLUME_EYE " + std::to_string(eye_binding) + "\n#define VOLUME_KIND " +
                              kinds[static_cast<int>(kind)] + "\n#define DEPTH_MODE " +
                              std::to_string(static_cast<int>(depth_)) + "\n";
-  auto use = [&](Pass pass) -> const gpu::Program& {
-    // Only the cell pass depends on the split.
-    std::string defines = common + "#define PASS " + std::to_string(pass) + "\n";
-    if (pass == cells_pass && split) defines += "#define CELL_SPLIT\n";
-    const gpu::Program& p = gpu::cached_compute_program("methods/kit/light_volume/light_volume_mesh.comp.glsl", defines);
+  auto use = [&](const char* program) -> const gpu::Program& {
+    // Only the cell depths depend on the split.
+    const bool cells_split = program == cell_depths && split;
+    const gpu::Program& p = gpu::cached_compute_program(program, cells_split ? common + "#define CELL_SPLIT\n" : common);
     glUseProgram(p.id());
     gpu::set_uniform(p, "light_index", light);
     gpu::set_uniform(p, "grid", r);
@@ -231,34 +215,38 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
       glClearTexImage(cell_low_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty_low);
       glClearTexImage(cell_high_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty_high);
     }
-    dispatch_items(use(cells_pass), 0, cells * static_cast<GLuint>(sub_blocks * sub_blocks));
+    dispatch_items(use(cell_depths), 0, cells * static_cast<GLuint>(sub_blocks * sub_blocks));
   }
-  dispatch_items(use(grid_vertices_pass), 0, static_cast<GLuint>(faces * (r + 1) * (r + 1)));
+  dispatch_items(use(grid_vertices), 0, static_cast<GLuint>(faces * (r + 1) * (r + 1)));
   const bool shell = depth_ == Depth::shell;
-  if (kind == Kind::cube && shell) dispatch_items(use(seams_pass), 0, static_cast<GLuint>(6 * 4 * r));
+  if (kind == Kind::cube && shell) dispatch_items(use(seam_vertices), 0, static_cast<GLuint>(6 * 4 * r));
   const GLsizei first = ranges_[static_cast<size_t>(light)].first;
   const GLuint per_cell = shell ? 4 : 6;  // shell: two per cell and surface; texel: the top and two walls
-  write_records(use(grid_triangles_pass), first, cells, per_cell);
+  write_records(use(grid_triangles), first, cells, per_cell);
   const GLsizei extras_first = first + static_cast<GLsizei>(per_cell * cells);
   if (shell) {
     if (kind != Kind::cube)  // the strips between the borders
-      write_records(use(extra_triangles_pass), extras_first, static_cast<GLuint>(4 * r), 2);
+      write_records(use(extra_triangles), extras_first, static_cast<GLuint>(4 * r), 2);
   } else if (kind == Kind::cube) {  // the walls across the cube's edges
-    write_records(use(extra_triangles_pass), extras_first, static_cast<GLuint>(6 * 4 * r), 2);
+    write_records(use(extra_triangles), extras_first, static_cast<GLuint>(6 * 4 * r), 2);
   } else {
     const bool spot = kind == Kind::spot;
-    dispatch_items(use(extra_vertices_pass), 0, spot ? 1u : static_cast<GLuint>(4 * r + 8));
-    write_records(use(extra_triangles_pass), extras_first,
+    dispatch_items(use(extra_vertices), 0, spot ? 1u : static_cast<GLuint>(4 * r + 8));
+    write_records(use(extra_triangles), extras_first,
                   spot ? static_cast<GLuint>(12 * r) : static_cast<GLuint>(20 * r + 14), 1);
   }
-  dispatch_items(use(eye_pass), 0, 1);
+  dispatch_items(use(eye_count), 0, 1);
 }
 
-std::vector<int> LightVolumeMesh::eye_counts() const {
+EyeCounts LightVolumeMesh::eye_counts() const {
   std::vector<int> counts(ranges_.size(), 0);
   if (!counts.empty())
     glGetNamedBufferSubData(eye_counts_.id(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(int)), counts.data());
-  return counts;
+  return {counts, {}};
+}
+
+std::vector<std::pair<std::string, double>> LightVolumeMesh::stats() const {
+  return {{"volume_triangles", static_cast<double>(triangle_count_)}, {"volume_s", seconds()}};
 }
 
 std::vector<CountedTriangle> LightVolumeMesh::read_back() const {
@@ -295,14 +283,7 @@ std::vector<MemoryNeed> light_volume_mesh_needs(const Scene& scene, const Settin
   const int r = std::min(settings.integer("volume_resolution"), settings.integer("shadow_resolution"));
   int lights[4] = {0, 0, 0, 0};  // by Kind
   const std::vector<int> kinds = shadow_kinds(scene);
-  for (size_t i = 0; i < kinds.size(); ++i) {
-    const bool directional = scene.lights[i].type == LightType::directional;
-    const Kind kind = kinds[i] == shadow_cube  ? Kind::cube
-                      : kinds[i] != shadow_map ? Kind::none
-                      : directional            ? Kind::directional
-                                               : Kind::spot;
-    ++lights[static_cast<int>(kind)];
-  }
+  for (size_t i = 0; i < kinds.size(); ++i) ++lights[static_cast<int>(kind_of(kinds[i], scene.lights[i].type))];
   double triangles = 0.0;
   std::vector<std::string> meshes;
   for (const Kind kind : {Kind::cube, Kind::spot, Kind::directional}) {

@@ -9,7 +9,7 @@
 // with it (LitIntervalPass) to find the stretches where the light arrives
 // instead of marching through the shadow map (Kingston §4.3.2).
 //
-// The grid, per light (light_volume_mesh.comp.glsl): (R+1)² vertices over the
+// The grid, per light (light_volume_mesh.glsl and its programs): (R+1)² vertices over the
 // map's NDC square (a cube's faces' squares), each on the ray of points that
 // project there — from the light's position (spot, point) or along the
 // light's travel (directional) — and placed on it at a depth (below).
@@ -83,7 +83,7 @@
 // light 6R² + 20R + 14; a shell 4R² + 8R, 24R² and 4R² + 8R.
 #include "gpu/growing_buffer.hpp"
 #include "gpu/timer.hpp"
-#include "methods/kit/counting/lit_interval_pass.hpp"
+#include "methods/kit/counting/crossing_geometry.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
 
 #include <airlight/settings.hpp>
@@ -97,28 +97,32 @@ namespace airlight::kit {
 // resolution), with the method's default.
 std::vector<SettingSpec> light_volume_settings(int default_resolution);
 
-class LightVolumeMesh {
+class LightVolumeMesh final : public CrossingGeometry {
 public:
   enum class Depth { texel, shell };  // which mesh (above)
   enum class Kind { none, spot, cube, directional };  // the mesh a light gets, from its shadow map
 
   LightVolumeMesh(int resolution, Depth depth);
 
-  // GL objects; needs a current context.
-  void prepare();
+  // GL objects (the scene is not needed); needs a current context.
+  void prepare(const Scene& scene) override;
 
   // After the frame's shadow maps are drawn: every light's mesh into one
   // buffer of CountedTriangle records, lights in order, and each light's eye
-  // count. Binds the frame (SceneFrame::bind) and leaves image units 0–2 and
-  // storage bindings from binding::first_free_storage bound to its own objects.
-  void build(const SceneFrame& frame);
+  // count, timed as the pass "volume". Binds the frame (SceneFrame::bind) and
+  // leaves image units 0–2 and storage bindings from
+  // binding::first_free_storage bound to its own objects.
+  void build(const SceneFrame& frame, gpu::PassTimer& timer) override;
 
-  const gpu::Buffer& triangles() const { return triangles_.buffer(); }
+  CountedTriangles triangles() const override { return {{}, &triangles_.buffer(), static_cast<size_t>(triangle_count_)}; }
   GLsizei triangle_count() const { return triangle_count_; }  // this frame's, all lights
   // Per light: 0 if the frame's eye is inside its lit volume, 1 if not (read
-  // from the GPU, where the eye's cell of the mesh decides it).
-  std::vector<int> eye_counts() const;
+  // from the GPU, where the eye's cell of the mesh decides it); no planes through the eye.
+  EyeCounts eye_counts() const override;
   const gpu::Buffer& eye_count_buffer() const { return eye_counts_.buffer(); }  // the same on the GPU: one int per light
+  bool uses_shadow_maps() const override { return true; }
+  // volume_triangles (this frame's) and volume_s (seconds()).
+  std::vector<std::pair<std::string, double>> stats() const override;
   std::vector<CountedTriangle> read_back() const;  // for tests and reports
   double seconds() const;  // the last build's GPU time (gpu::PassTimer's)
 
@@ -132,6 +136,7 @@ public:
   GLsizei max_records_per_binding() const { return max_records_; }
 
 private:
+  void build_lights(const SceneFrame& frame);
   void build_light(int light, Kind kind, const SceneFrame& frame);
   void allocate(int grid, int layers, GLsizei triangles, int lights);
 

@@ -1,0 +1,83 @@
+#pragma once
+// Geometry whose crossings with the view rays are counted (docs/design.md §3):
+// per frame, triangles that bound each light's lit region (CountedTriangle)
+// and each light's count at the eye, which a CrossingPass turns into L_air —
+// shadow_planes' silhouettes and beam_volumes' lit pyramids (CasterCrossings,
+// built on the CPU from the casters), the light volume mesh (built on the GPU
+// from the shadow maps). A method of such geometry is a CrossingMethod.
+#include "gpu/gl.hpp"
+#include "gpu/timer.hpp"
+#include "methods/kit/counting/counted_triangles.hpp"
+#include "methods/kit/frame/scene_frame.hpp"
+
+#include <airlight/method.hpp>
+#include <airlight/scene.hpp>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace airlight::kit {
+
+// A frame's counted triangles: on the CPU, or the first `count` records of a
+// GPU buffer (on_gpu not null).
+struct CountedTriangles {
+  std::span<const CountedTriangle> on_cpu;
+  const gpu::Buffer* on_gpu = nullptr;
+  size_t count = 0;
+  size_t size() const { return on_gpu ? count : on_cpu.size(); }
+};
+
+class CrossingGeometry {
+public:
+  virtual ~CrossingGeometry() = default;
+  // What depends on the scene alone; the context is current.
+  virtual void prepare(const Scene& scene) = 0;
+  // This frame's triangles and eye counts, after its shadow maps are drawn; GPU work timed with `timer`.
+  virtual void build(const SceneFrame& frame, gpu::PassTimer& timer) = 0;
+  virtual CountedTriangles triangles() const = 0;
+  virtual EyeCounts eye_counts() const = 0;
+  // Whether the frame must draw the lights' shadow maps for build().
+  virtual bool uses_shadow_maps() const = 0;
+  // Counters for the report, the build's time among them.
+  virtual std::vector<std::pair<std::string, double>> stats() const = 0;
+};
+
+// What turns a geometry's triangles and eye counts into L_air: LitIntervalPass
+// (Γ over the lit intervals their crossings bound), or a method's own.
+class CrossingPass {
+public:
+  virtual ~CrossingPass() = default;
+  virtual void prepare() = 0;  // needs a current context
+  // L_air into `target` (RGBA32F at the frame's size); the frame must be bound.
+  virtual void run(const SceneFrame& frame, const CrossingGeometry& geometry, const gpu::Texture& target,
+                   gpu::PassTimer& timer) = 0;
+  virtual std::vector<std::pair<std::string, double>> stats() const = 0;
+};
+
+// Counted triangles built on the CPU every frame from the scene's shadow
+// casters (Mesh::casts_shadows), without shadow maps; the build, with no GL
+// work, is timed as the stat build_s.
+class CasterCrossings : public CrossingGeometry {
+public:
+  void prepare(const Scene& scene) final;
+  // The frame's triangles and eye counts (no GL).
+  void build(const FrameInputs& inputs);
+  void build(const SceneFrame& frame, gpu::PassTimer&) override { build(frame.inputs()); }
+  CountedTriangles triangles() const final { return {triangles_, nullptr, triangles_.size()}; }
+  EyeCounts eye_counts() const final { return eye_; }
+  bool uses_shadow_maps() const final { return false; }
+
+protected:
+  // What the casters (indices into Scene::meshes and FrameInputs::transforms) fix.
+  virtual void prepare_casters(const Scene& scene, const std::vector<int>& casters) = 0;
+  // The frame's triangles_ (cleared) and eye_.
+  virtual void add_triangles(const FrameInputs& inputs) = 0;
+
+  std::vector<CountedTriangle> triangles_;
+  EyeCounts eye_;
+  double build_s_ = 0.0;
+};
+
+}  // namespace airlight::kit

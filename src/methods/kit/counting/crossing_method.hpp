@@ -1,0 +1,30 @@
+#pragma once
+// A method that counts crossings (docs/design.md §3): every frame its geometry
+// built (CrossingGeometry) and turned into L_air by a CrossingPass, the lit
+// intervals' by default. Its stats are the geometry's, then the pass's.
+#include "methods/kit/counting/crossing_geometry.hpp"
+#include "methods/kit/counting/lit_interval_pass.hpp"
+#include "methods/kit/method/gpu_method.hpp"
+
+#include <memory>
+
+namespace airlight::kit {
+
+class CrossingMethod final : public GpuMethod {
+public:
+  CrossingMethod(const Settings& settings, std::unique_ptr<CrossingGeometry> geometry,
+                 std::unique_ptr<CrossingPass> pass);
+  // With the lit-interval pass at the settings.
+  CrossingMethod(const Settings& settings, std::unique_ptr<CrossingGeometry> geometry);
+
+private:
+  void prepare_airlight(const Scene& scene) override;
+  void render_airlight(const SceneFrame& frame, const Texture& target, PassTimer& timer) override;
+  bool uses_shadow_maps() const override { return geometry_->uses_shadow_maps(); }
+  std::vector<std::pair<std::string, double>> stats() const override;
+
+  std::unique_ptr<CrossingGeometry> geometry_;
+  std::unique_ptr<CrossingPass> pass_;
+};
+
+}  // namespace airlight::kit
