@@ -23,7 +23,7 @@ auto create(Args... args) {
 }
 
 // A sampling method's "high quality" trial: its rRMSE at `settings` over its
-// defaults within issue 25's 3 %, `left` saying what error those settings leave.
+// defaults within 3 % rRMSE (docs/design.md §6), `left` saying what error those settings leave.
 Trial high_quality_trial(std::vector<std::string> settings, const std::string& left);
 
 }  // namespace airlight::kit
