@@ -30,7 +30,9 @@ MethodInfo reference_info() {
 MethodInfo raymarch_info() {
   return method("raymarch", {{"steps", T::integer, 64, 1, 4096, {}, ""},
                              {"jitter", T::choice, 0, 0, 0, {"none", "white", "blue"}, ""},
-                             {"sampling", T::choice, 1, 0, 0, {"uniform", "equiangular"}, ""}});
+                             {"sampling", T::choice, 1, 0, 0, {"uniform", "equiangular"}, ""},
+                             {"scale", T::choice, 0, 0, 0, {"1", "1/2", "1/4"}, ""},
+                             {"upsample", T::choice, 0, 0, 0, {"bilateral", "bilinear"}, ""}});
 }
 
 MethodInfo planes_info() {

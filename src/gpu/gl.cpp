@@ -36,7 +36,7 @@ Allocations& allocations() {
 
 size_t texel_bytes(GLenum format) {
   switch (format) {
-    case GL_R8: return 1;
+    case GL_R8: case GL_R8UI: return 1;
     case GL_RG8: case GL_R16F: case GL_DEPTH_COMPONENT16: return 2;
     case GL_RGBA8: case GL_SRGB8_ALPHA8: case GL_RG16F: case GL_R32F: case GL_R32I: case GL_R32UI:
     case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32F: case GL_DEPTH24_STENCIL8: return 4;

@@ -36,14 +36,15 @@ set(KIT_BASE gpu scene geometry optics core scene-model contract)
 set(ALLOW_methods/kit/frame        ${KIT_BASE})
 set(ALLOW_methods/kit/sampling     ${KIT_BASE})
 set(ALLOW_methods/kit/engine       methods/kit/frame ${KIT_BASE})
-set(ALLOW_methods/kit/method       methods/kit/engine methods/kit/frame ${KIT_BASE})
+set(ALLOW_methods/kit/resolution   methods/kit/frame ${KIT_BASE})
+set(ALLOW_methods/kit/method       methods/kit/resolution methods/kit/engine methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/march        methods/kit/sampling methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/gamma        methods/kit/sampling methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/counting     methods/kit/method methods/kit/gamma methods/kit/sampling methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/light_volume methods/kit/counting methods/kit/method methods/kit/frame ${KIT_BASE})
 set(ALLOW_methods/kit/planes       methods/kit/method methods/kit/gamma methods/kit/sampling methods/kit/frame
                                    reference ${KIT_BASE})
-set(KIT_ROOMS frame sampling engine method march gamma counting light_volume planes)
+set(KIT_ROOMS frame sampling engine resolution method march gamma counting light_volume planes)
 list(TRANSFORM KIT_ROOMS PREPEND methods/kit/ OUTPUT_VARIABLE KIT)
 # What the tests share, on every room; and a test beside the code it tests
 # (*_test.cpp and its *_test_support.{hpp,cpp}, a method's *_quality.cpp) may include it and every room, as the

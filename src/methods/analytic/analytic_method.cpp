@@ -54,7 +54,7 @@ private:
     glUseProgram(gpu::cached_compute_program("methods/analytic/analytic.comp.glsl", defines).id());
     if (table_) glBindTextureUnit(sun_table_unit, table_texture_.id());
     glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gpu::dispatch_pixels(frame.width(), frame.height());
+    frame.dispatch_pixels();
     closed_forms_ = static_cast<double>(frame.width()) * frame.height() * frame.light_count();
   }
 
@@ -74,7 +74,7 @@ MethodInfo analytic_method() {
           "Nilsson eq. 2.17), with F(u, v) from a table or integrated in the shader; no volumetric shadows "
           "(occluders only end the view ray), and the medium that fills space only: bounded volumes and gobo "
           "colours are ignored",
-          kit::gpu_settings(analytic_settings()), kit::create<Analytic>(),
+          kit::per_pixel_settings(analytic_settings()), kit::create<Analytic>(),
           128, kit::gpu_memory(), {.volumetric_shadows = false, .bounded_volumes = false, .gobos = false},
           {{"exact", {}, Trial::Measure::worst_pixel, 0.02,
             "Sun et al.'s closed form against the reference without shadows, volumes or gobos: the same integral, evaluated in float "

@@ -110,7 +110,7 @@ Scene phase_scene(const PhaseCase& c) {
 TEST(Analytic, SettingsIncludeTheSharedGpuSettings) {
   std::set<std::string> names;
   for (const auto& s : find_method("analytic").settings) names.insert(s.name);
-  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "F"}));
+  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "F", "scale", "upsample"}));
   EXPECT_EQ(find_method("analytic").source, "Sun et al. 2005 via Kingston 4.2");
 }
 

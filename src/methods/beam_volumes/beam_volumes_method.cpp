@@ -55,7 +55,7 @@ MethodInfo beam_volumes_method() {
           "exact volumetric shadows from a beam tree per light (a BSP tree of planes through the light, any "
           "polygon order): the pyramids between the light and the polygons it sees first, backplate included, "
           "bound its lit region; per pixel the closed-form Γ summed over the lit intervals",
-          kit::gpu_settings(std::move(own)), beam_volumes,
+          kit::per_pixel_settings(std::move(own)), beam_volumes,
           224, kit::gpu_memory(beam_volumes_memory), {.caster_triangles = true},
           {{"exact", {"samples=512"}, Trial::Measure::worst_pixel, 0.02,
             "exact shadows from the beam trees of the casters' triangles and Γ in closed form (512 points per "

@@ -1,5 +1,5 @@
 // beam_volumes' rows of the quality table (docs/design.md §6), each tolerance beside its reason.
-#include "methods/kit/testing/quality.hpp"
+#include "methods/kit/testing/reduced_quality.hpp"
 
 namespace airlight::kit::test {
 namespace {
@@ -21,6 +21,22 @@ const Case rows[] = {
 // clang-format on
 
 INSTANTIATE_TEST_SUITE_P(Table, Quality, ::testing::ValuesIn(rows), case_name);
+
+// At scale = 1/2 (kit/resolution) against the reference: the full scale's error and what the
+// upsampling adds where L_air changes within a coarse pixel (testing/reduced_quality.hpp); at
+// 128×96 such pixels are many, at 1024×768 few (docs/decisions.md "Reduced resolution").
+// clang-format off
+const Case reduced_rows[] = {
+  {"beam_volumes", "teapot_spot", {}, 0.02,
+   "measured 0.0143: the spot's cone edge and the teapot's shadow edges between coarse pixels that agree"},
+  {"beam_volumes", "stage", {}, 0.061,
+   "measured 0.0436 (full scale 0.0055): the gobos' stripes, a coarse pixel wide, between coarse pixels that agree"},
+  {"beam_volumes", "biri_sphere", {}, 0.113,
+   "measured 0.0806: a lit sliver beside the sphere, narrower than a coarse pixel: no coarse neighbour sees it"},
+};
+// clang-format on
+
+INSTANTIATE_TEST_SUITE_P(Reduced, ReducedQuality, ::testing::ValuesIn(reduced_rows), case_name);
 
 }  // namespace
 }  // namespace airlight::kit::test

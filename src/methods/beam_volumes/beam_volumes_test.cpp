@@ -31,7 +31,7 @@ TEST(BeamVolumes, RegisteredWithItsSettings) {
   std::set<std::string> names;
   for (const SettingSpec& s : find_method("beam_volumes").settings) names.insert(s.name);
   EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "capacity", "samples", "accumulate",
-                                                "max_triangles"}));
+                                                "max_triangles", "scale", "upsample"}));
 }
 
 // The eye inside the spot's lit cone of biri_sphere, between the light and the

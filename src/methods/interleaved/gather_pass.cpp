@@ -15,9 +15,9 @@ constexpr GLuint spread_unit = partial_unit + 2;
 
 void GatherPass::run(const kit::SceneFrame& frame, const gpu::Texture& image, const gpu::Texture& guide,
                      const gpu::Texture& spread) {
-  if (frame.width() != width_ || frame.height() != height_) {
-    width_ = frame.width();
-    height_ = frame.height();
+  if (frame.gbuffer_width() != width_ || frame.gbuffer_height() != height_) {
+    width_ = frame.gbuffer_width();
+    height_ = frame.gbuffer_height();
     rows_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
   }
   glBindTextureUnit(guide_unit, guide.id());
@@ -41,7 +41,7 @@ void GatherPass::pass(const kit::SceneFrame& frame, const gpu::Texture& from, co
   gpu::set_uniform(program, "depth_threshold", settings_.depth_threshold);
   glBindTextureUnit(partial_unit, from.id());
   glBindImageTexture(0, to.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  gpu::dispatch_pixels(frame.width(), frame.height());
+  frame.dispatch_pixels();
 }
 
 }  // namespace airlight::methods

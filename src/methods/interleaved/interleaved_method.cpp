@@ -15,6 +15,7 @@ class Interleaved final : public kit::GpuMethod {
 public:
   explicit Interleaved(const Settings& s)
       : GpuMethod(s),
+        block_(s.integer("block")),
         march_(kit::MarchSettings::from(s, s.integer("block"), normalized(s), guarded(s))),
         gather_({s.integer("block"), s.boolean("depth_aware"), static_cast<float>(s.real("depth_threshold")),
                  normalized(s), guarded(s) ? static_cast<float>(s.real("guard")) : 0.0f}) {}
@@ -39,6 +40,11 @@ private:
     return {{"light_samples", march_.light_samples()}};
   }
 
+  // The vertical gather at a pixel reads the horizontal one's within M − 1
+  // rows, which reads partial sums within M − 1 columns (gather.comp.glsl).
+  int recompute_halo() const override { return block_ - 1; }
+
+  int block_;
   kit::MarchPass march_;
   GatherPass gather_;
 };
@@ -71,7 +77,7 @@ MethodInfo interleaved_method() {
           "raymarch with the N samples spread over M×M pixel blocks (interleaved sampling, Keller & "
           "Heidrich 2001) and gathered by a separable sum, normalized by each pixel's unshadowed ∫σs·I/r² and "
           "depth-aware by default",
-          kit::gpu_settings(std::move(own)), kit::create<Interleaved>(),
+          kit::per_pixel_settings(std::move(own)), kit::create<Interleaved>(),
           224, kit::gpu_memory(), {},
           {kit::high_quality_trial({"steps=512", "shadow_resolution=2048"},
             "512 equiangular samples per light over 4×4 blocks and 2048² maps: the gather blurs only within "

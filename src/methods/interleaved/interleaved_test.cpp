@@ -42,7 +42,7 @@ TEST(Interleaved, RegisteredWithItsSettings) {
   std::set<std::string> names;
   for (const auto& s : find_method("interleaved").settings) names.insert(s.name);
   EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "steps", "jitter", "sampling", "block",
-                                          "depth_aware", "depth_threshold", "gather", "guard"}));
+                                          "depth_aware", "depth_threshold", "gather", "guard", "scale", "upsample"}));
   EXPECT_EQ(find_method("interleaved").source, "Tóth 2009 §4.1");
 }
 

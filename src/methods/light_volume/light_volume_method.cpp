@@ -34,7 +34,7 @@ MethodInfo light_volume_method() {
           "exact volumetric shadows up to the shadow map's resolution: each light's map made a closed mesh of its "
           "lit region on the GPU every frame, the mesh's crossings with each pixel's ray counted into lit "
           "intervals, the closed-form Γ summed over them; nothing marched, no cost per caster triangle",
-          kit::gpu_settings(std::move(own)), light_volume,
+          kit::per_pixel_settings(std::move(own)), light_volume,
           224, kit::gpu_memory(light_volume_memory), {},
           {{"grid at the map's resolution",
             {"shadow_resolution=256", "volume_resolution=256", "samples=512"},

@@ -30,7 +30,7 @@ double error_of(const Scene& scene, const std::vector<std::string>& settings, co
 TEST(LightVolume, RegisteredWithItsSettings) {
   std::set<std::string> names;
   for (const SettingSpec& s : find_method("light_volume").settings) names.insert(s.name);
-  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "volume_resolution", "capacity", "samples"}));
+  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "volume_resolution", "capacity", "samples", "scale", "upsample"}));
 }
 
 // The mesh follows the map texel by texel, each all lit or all shadowed as

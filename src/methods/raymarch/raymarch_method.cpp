@@ -33,7 +33,7 @@ MethodInfo raymarch_method() {
           "per-pixel ray marching over the G-buffer distance with shadow-map (2D) or cube-map (point) "
           "visibility, samples at the middle of each step or jittered by a noise texture, in even steps "
           "or equiangular about each point and spot light",
-          kit::gpu_settings(kit::march_settings()),
+          kit::per_pixel_settings(kit::march_settings()),
           kit::create<Raymarch>(),
           160, kit::gpu_memory(), {},
           {kit::high_quality_trial({"steps=512", "shadow_resolution=2048"},

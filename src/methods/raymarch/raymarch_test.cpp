@@ -57,7 +57,7 @@ double rel_rmse(const Image& image, const Image& reference) { return compare_ima
 TEST(Raymarch, SettingsIncludeTheSharedGpuSettings) {
   std::set<std::string> names;
   for (const auto& s : find_method("raymarch").settings) names.insert(s.name);
-  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "steps", "jitter", "sampling"}));
+  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "steps", "jitter", "sampling", "scale", "upsample"}));
   EXPECT_EQ(find_method("raymarch").source, "Tóth 2009, Kingston 4.1");
 }
 

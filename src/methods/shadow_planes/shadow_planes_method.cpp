@@ -40,7 +40,7 @@ MethodInfo shadow_planes_method() {
           "and counted from the eye's count, give each light's lit intervals, over which the closed-form Γ is "
           "summed, piece by piece through bounded volumes (Biri §5.2); gobos and the light's leg through other "
           "volumes by a sampled ratio",
-          kit::gpu_settings(std::move(own)),
+          kit::per_pixel_settings(std::move(own)),
           [](const Settings& s) { return std::make_unique<kit::CrossingMethod>(s, std::make_unique<Silhouettes>()); },
           224, kit::gpu_memory(shadow_planes_memory), {.caster_triangles = true},
           {{"exact", {"samples=512"}, Trial::Measure::worst_pixel, 0.02,

@@ -49,7 +49,7 @@ void expect_matches_reference(const Scene& scene, int w = width, int h = height,
 TEST(ShadowPlanes, RegisteredWithItsSettings) {
   std::set<std::string> names;
   for (const SettingSpec& s : find_method("shadow_planes").settings) names.insert(s.name);
-  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "capacity", "samples", "max_edges"}));
+  EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "capacity", "samples", "max_edges", "scale", "upsample"}));
 }
 
 TEST(ShadowPlanes, MatchesTheReferenceAtASecondSize) {

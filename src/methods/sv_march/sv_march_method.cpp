@@ -42,8 +42,9 @@ private:
     march_.prepare();
   }
 
+  void build_frame(const kit::SceneFrame& frame, gpu::PassTimer& timer) override { shell_.build(frame, timer); }
+
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
-    shell_.build(frame, timer);
     {
       gpu::ScopedPass pass(timer, "bounds");
       draw_bounds(frame);
@@ -58,15 +59,15 @@ private:
   // none), 2i + 1: the farthest (0 if none).
   void draw_bounds(const kit::SceneFrame& frame) {
     const int layers = std::max(2 * frame.light_count(), 1);  // a texture has a layer; no light reads it
-    if (frame.width() != width_ || frame.height() != height_ || layers != layers_) {
-      width_ = frame.width();
-      height_ = frame.height();
+    if (frame.gbuffer_width() != width_ || frame.gbuffer_height() != height_ || layers != layers_) {
+      width_ = frame.gbuffer_width();
+      height_ = frame.gbuffer_height();
       layers_ = layers;
       bounds_ = gpu::make_texture(GL_TEXTURE_2D_ARRAY, GL_R32UI, width_, height_, layers_);
     }
     const GLuint infinity = 0x7f800000u, zero = 0u;
     for (int layer = 0; layer < layers_; ++layer)
-      glClearTexSubImage(bounds_.id(), 0, 0, 0, layer, width_, height_, 1, GL_RED_INTEGER, GL_UNSIGNED_INT,
+      glClearTexSubImage(bounds_.id(), 0, 0, 0, layer, frame.width(), frame.height(), 1, GL_RED_INTEGER, GL_UNSIGNED_INT,
                          layer % 2 == 0 ? &infinity : &zero);
     const gpu::Program& program = gpu::cached_program({{GL_VERTEX_SHADER, "methods/kit/counting/crossings.vert.glsl"},
                                                        {GL_FRAGMENT_SHADER, "methods/sv_march/sv_bounds.frag.glsl"}},
@@ -111,7 +112,7 @@ MethodInfo sv_march_method() {
           "ray marching only where shadows can change: each light's shadow map made a conservative shell mesh "
           "on the GPU every frame, each pixel's ray marched with shadow-map lookups (raymarch's steps, sampling "
           "and jitter) only between its first and last crossing with it, the closed-form Γ before and after",
-          kit::gpu_settings(std::move(own)), kit::create<SvMarch>(),
+          kit::per_pixel_settings(std::move(own)), kit::create<SvMarch>(),
           176, kit::gpu_memory(sv_march_memory), {},
           {kit::high_quality_trial({"steps=512", "samples=256", "shadow_resolution=2048"},
             "512 steps per light inside the shells, closed form outside them with 256 samples of its "

@@ -30,7 +30,7 @@ TEST(SvMarch, RegisteredWithItsSettings) {
   std::set<std::string> names;
   for (const SettingSpec& s : find_method("sv_march").settings) names.insert(s.name);
   EXPECT_EQ(names, (std::set<std::string>{"shadow_resolution", "shadow_bias", "steps", "jitter", "sampling",
-                                          "volume_resolution", "samples"}));
+                                          "volume_resolution", "samples", "scale", "upsample"}));
 }
 
 // At equal steps N sv_march spends them on [front, back] alone and integrates

@@ -14,8 +14,9 @@ void CrossingMethod::prepare_airlight(const Scene& scene) {
   pass_->prepare();
 }
 
+void CrossingMethod::build_frame(const SceneFrame& frame, PassTimer& timer) { geometry_->build(frame, timer); }
+
 void CrossingMethod::render_airlight(const SceneFrame& frame, const Texture& target, PassTimer& timer) {
-  geometry_->build(frame, timer);
   pass_->run(frame, *geometry_, target, timer);
 }
 

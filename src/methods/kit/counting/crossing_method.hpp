@@ -19,6 +19,7 @@ public:
 
 private:
   void prepare_airlight(const Scene& scene) override;
+  void build_frame(const SceneFrame& frame, PassTimer& timer) override;
   void render_airlight(const SceneFrame& frame, const Texture& target, PassTimer& timer) override;
   bool uses_shadow_maps() const override { return geometry_->uses_shadow_maps(); }
   std::vector<std::pair<std::string, double>> stats() const override;

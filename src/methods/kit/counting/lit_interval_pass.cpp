@@ -77,9 +77,9 @@ void LitIntervalPass::run(const SceneFrame& frame, const CrossingGeometry& geome
 // Every pixel's list of crossings, the pool grown and the triangles drawn
 // again until every crossing fits.
 void LitIntervalPass::list_crossings(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count) {
-  if (frame.width() != width_ || frame.height() != height_) {
-    width_ = frame.width();
-    height_ = frame.height();
+  if (frame.gbuffer_width() != width_ || frame.gbuffer_height() != height_) {
+    width_ = frame.gbuffer_width();
+    height_ = frame.gbuffer_height();
     heads_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
     if (loop_limit_) progress_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
   }
@@ -134,7 +134,7 @@ void LitIntervalPass::resolve(const SceneFrame& frame, const EyeCounts& eye, con
   if (!loop_limit_) {
     glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    gpu::dispatch_pixels(frame.width(), frame.height());
+    frame.dispatch_pixels();
     return;
   }
   resolve_in_passes(frame, program, target);
@@ -153,7 +153,7 @@ void LitIntervalPass::resolve_in_passes(const SceneFrame& frame, const gpu::Prog
   glNamedBufferSubData(node_count_.id(), 2 * sizeof(GLuint), sizeof(zeros), zeros);
   for (passes_ = 1;; ++passes_) {
     gpu::set_uniform(program, "resume", passes_ - 1);
-    gpu::dispatch_pixels(frame.width(), frame.height());
+    frame.dispatch_pixels();
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
     GLuint counts[2] = {0, 0};
     glGetNamedBufferSubData(node_count_.id(), 2 * sizeof(GLuint), sizeof(counts), counts);

@@ -72,7 +72,7 @@ void write_engine_target(const EngineTarget& target, const SceneFrame& frame, co
     glUseProgram(program.id());
     glBindImageTexture(0, source, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(1, texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, format.gl);
-    gpu::dispatch_pixels(frame.width(), frame.height());
+    frame.dispatch_pixels();
   }
   if (!target.color) return;
   const gpu::Framebuffer fbo = gpu::make_framebuffer();

@@ -11,12 +11,12 @@ std::string binding_defines() {
   const std::pair<const char*, GLuint> all[] = {
       {"FRAME_BLOCK", frame_block},   {"LIGHTS", lights},
       {"VOLUMES", volumes},           {"LOBES", lobes},
-      {"FACE_NORMALS", face_normals}, {"OBJECTS", objects},
+      {"FACE_NORMALS", face_normals}, {"OBJECTS", objects}, {"TILES", tiles},
       {"DISTANCE", distance},         {"NORMAL", normal},
       {"GEOMETRIC_NORMAL", geometric_normal}, {"ALBEDO", albedo},
       {"GOBOS", gobos},               {"SHADOW_MAPS", shadow_maps},
       {"SHADOW_CUBES", shadow_cubes}, {"ENGINE_INPUT", engine_input},
-      {"FIRST_FREE_TEXTURE", first_free_texture}};
+      {"FIRST_FREE_TEXTURE", first_free_texture}, {"FIRST_FREE_STORAGE", first_free_storage}};
   std::string text;
   for (const auto& [name, value] : all)
     text += "#define BINDING_" + std::string(name) + " " + std::to_string(value) + "\n";
@@ -30,7 +30,8 @@ void SceneFrame::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::lobes, lobes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::face_normals, face_normals_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::objects, objects_.id());
-  glBindTextureUnit(binding::distance, distance_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::tiles, grid_tiles_ ? grid_tiles_->id() : 0);
+  glBindTextureUnit(binding::distance, distance().id());
   glBindTextureUnit(binding::normal, normal_.id());
   glBindTextureUnit(binding::geometric_normal, geometric_normal_.id());
   glBindTextureUnit(binding::albedo, albedo_.id());

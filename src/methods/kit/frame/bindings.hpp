@@ -15,6 +15,7 @@ inline constexpr GLuint volumes = 1;         // SSBO SceneVolume[]
 inline constexpr GLuint lobes = 2;           // SSBO SceneLobe[] (medium's, then each volume's)
 inline constexpr GLuint face_normals = 3;    // SSBO vec4[] per triangle (G-buffer pass only)
 inline constexpr GLuint objects = 4;         // SSBO ObjectTransform[] per mesh (G-buffer and shadow passes)
+inline constexpr GLuint tiles = 5;           // SSBO FrameTiles of a sparse grid (pixel.glsl)
 inline constexpr GLuint first_free_storage = 8;
 inline constexpr GLuint distance = 0;        // sampler2D R32F: eye distance along the pixel ray
 inline constexpr GLuint normal = 1;          // sampler2D RGBA32F: shading normal, facing the eye

@@ -7,6 +7,7 @@
 
 #include <airlight/error.hpp>
 #include <algorithm>
+#include <cstddef>
 
 namespace airlight::kit {
 
@@ -45,6 +46,10 @@ void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings
   geometry::camera_basis(inputs.camera);  // throws for a degenerate camera
   resize(inputs.width, inputs.height);
   inputs_ = inputs;
+  grid_distance_ = nullptr;
+  grid_tiles_ = nullptr;
+  grid_width_ = inputs.width;
+  grid_height_ = inputs.height;
   upload_inputs(settings, engine, needs.shadows);
   bind();
   {
@@ -67,10 +72,34 @@ void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings
   }
 }
 
+void SceneFrame::use_grid(const Texture& distance, int width, int height, const Buffer* tiles) {
+  grid_distance_ = &distance;
+  grid_tiles_ = tiles;
+  grid_width_ = width;
+  grid_height_ = height;
+  const glm::vec2 size(width, height);
+  glNamedBufferSubData(frame_block_.id(), offsetof(shader::FrameData, size), sizeof size, &size);
+  const int sparse = tiles ? 1 : 0;
+  glNamedBufferSubData(frame_block_.id(), offsetof(shader::FrameData, sparse), sizeof sparse, &sparse);
+}
+
+void SceneFrame::dispatch_pixels() const {
+  if (!grid_tiles_) return gpu::dispatch_pixels(grid_width_, grid_height_);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, grid_tiles_->id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+void SceneFrame::use_gbuffer_grid() {
+  use_grid(distance_, inputs_.width, inputs_.height);
+  grid_distance_ = nullptr;
+}
+
 void SceneFrame::shade_surfaces() {
   glUseProgram(cached_compute_program("methods/kit/frame/surface.comp.glsl", defines_).id());
   glBindImageTexture(0, surface_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  dispatch_pixels(inputs_.width, inputs_.height);
+  gpu::dispatch_pixels(inputs_.width, inputs_.height);
 }
 
 }  // namespace airlight::kit

@@ -73,18 +73,40 @@ public:
   // nothing; changing the structure compiles each program once more.
   const std::string& defines() const { return defines_; }
 
-  // This frame's inputs.
+  // The pixel grid a method renders on (docs/design.md §3, reduced resolution):
+  // the G-buffer's after render(), or one that methods/kit/resolution puts in
+  // its place — a coarser grid over the same view, or the G-buffer's with
+  // pixels left out. `distance` (R32F, width × height) takes the G-buffer
+  // distance's binding, a negative value marking a pixel the method skips
+  // (FRAME_PIXEL_OR_RETURN, pixel.glsl); the frame block's size follows, and
+  // width(), height() and bind() are the grid's. Call bind() after a change.
+  // A sparse grid (`tiles` not null: a FrameTiles buffer, pixel.glsl) is the
+  // full one's size, its pixels only those of the listed 8×8 tiles.
+  void use_grid(const Texture& distance, int width, int height, const Buffer* tiles = nullptr);
+  void use_gbuffer_grid();
+  // Runs the bound per-pixel program (pixel.glsl) over the grid: every
+  // workgroup of width() × height(), or a sparse grid's tiles (an indirect
+  // dispatch); then a memory barrier, as gpu::dispatch_pixels.
+  void dispatch_pixels() const;
+
+  // This frame's inputs (their width and height are the G-buffer's).
   const FrameInputs& inputs() const { return inputs_; }
-  int width() const { return inputs_.width; }
-  int height() const { return inputs_.height; }
+  int width() const { return grid_width_; }
+  int height() const { return grid_height_; }
+  // The G-buffer's size, which holds every grid of the frame: a method's own
+  // per-pixel textures take it, so that a frame on two grids allocates once.
+  int gbuffer_width() const { return inputs_.width; }
+  int gbuffer_height() const { return inputs_.height; }
   int light_count() const { return static_cast<int>(inputs_.lights.size()); }
   // Per light, this frame's shadow map kind (shadow_none, shadow_map or shadow_cube: shadow_projection.hpp).
   const std::vector<int>& shadow_kinds() const { return shadow_kinds_; }
   // Texels per side of this frame's shadow maps and cube faces.
   int shadow_resolution() const { return shadow_resolution_; }
-  const Texture& distance() const { return distance_; }
+  const Texture& distance() const { return grid_distance_ ? *grid_distance_ : distance_; }  // the grid's
+  const Texture& gbuffer_distance() const { return distance_; }
   // DEPTH_COMPONENT32F of the G-buffer pass (1 where no surface is hit), for
-  // methods that rasterize with the depth test against the scene.
+  // methods that rasterize with the depth test against the scene (always the
+  // G-buffer's grid: those methods take no reduced resolution).
   const Texture& depth() const { return depth_; }
   const Texture& albedo() const { return albedo_; }  // rgb albedo, a = 1 where a surface is hit
   const Texture& surface() const { return surface_; }
@@ -131,6 +153,9 @@ private:
   std::vector<const Image*> gobo_images_;  // per gobo layer
   std::vector<Bounds> caster_bounds_;  // per mesh, in object space (caster_bounds)
   int index_count_ = 0, caster_index_count_ = 0, shadow_resolution_ = 0;
+  const Texture* grid_distance_ = nullptr;  // null: the G-buffer's
+  const Buffer* grid_tiles_ = nullptr;      // null: every pixel
+  int grid_width_ = 0, grid_height_ = 0;
 
   VertexArray vertex_array_;
   Buffer vertices_, indices_, face_normals_, objects_;

@@ -70,9 +70,9 @@ void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   gpu::set_uniform(program, "block", settings_.block);
   glBindTextureUnit(jitter_unit, noise_.id());
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  if (frame.width() != width_ || frame.height() != height_) {
-    width_ = frame.width();
-    height_ = frame.height();
+  if (frame.gbuffer_width() != width_ || frame.gbuffer_height() != height_) {
+    width_ = frame.gbuffer_width();
+    height_ = frame.gbuffer_height();
     if (settings_.normalized) guide_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
     if (settings_.guard) spread_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
   }
@@ -82,7 +82,7 @@ void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   for (int first = 0; first < own_samples; first += per_dispatch) {
     gpu::set_uniform(program, "first_sample", first);
     gpu::set_uniform(program, "sample_count", std::min(per_dispatch, own_samples - first));
-    gpu::dispatch_pixels(frame.width(), frame.height());
+    frame.dispatch_pixels();
   }
   light_samples_ = static_cast<double>(frame.width()) * frame.height() * settings_.steps / stride * frame.light_count();
 }

@@ -8,6 +8,7 @@
 
 #include <airlight/error.hpp>
 #include <chrono>
+#include <cmath>
 
 namespace airlight::kit {
 
@@ -23,10 +24,34 @@ std::vector<SettingSpec> gpu_settings(std::vector<SettingSpec> own) {
   return specs;
 }
 
+std::vector<SettingSpec> per_pixel_settings(std::vector<SettingSpec> own) {
+  for (SettingSpec& spec : resolution_settings()) own.push_back(std::move(spec));
+  return gpu_settings(std::move(own));
+}
+
+namespace {
+
+// ReducedResolution's textures: the coarse grid's airlight (16 bytes) and
+// distance (4); with bilateral upsampling the full grid's failed mask (1),
+// its distance (4) and recomputed airlight (16), and its tiles' list and
+// flags (12 bytes a tile of 8×8 and a header of 16).
+std::vector<MemoryNeed> resolution_needs(const Settings& settings, int width, int height) {
+  const ResolutionSettings r = ResolutionSettings::from(settings);
+  if (r.divisor == 1) return {};
+  const double coarse = std::ceil(double(width) / r.divisor) * std::ceil(double(height) / r.divisor);
+  const double full = double(width) * height, tiles = std::ceil(width / 8.0) * std::ceil(height / 8.0);
+  return {{"scale", "the coarse grid's airlight and distance", 20.0 * coarse, 0.0, 16.0 * coarse},
+          {"upsample", "the recomputed pixels' mask, distance and airlight on the full grid",
+           r.bilateral ? 21.0 * full + 12.0 * tiles + 16.0 : 0.0, 0.0, r.bilateral ? 16.0 * full : 0.0}};
+}
+
+}  // namespace
+
 MemoryEstimate gpu_memory(MemoryEstimate own) {
   return [own = std::move(own)](const Scene& scene, const Settings& settings, int width, int height) {
     std::vector<MemoryNeed> needs = shadow_map_needs(scene, settings);
     needs.push_back(geometry_need(scene));
+    for (MemoryNeed& need : resolution_needs(settings, width, height)) needs.push_back(std::move(need));
     if (own)
       for (MemoryNeed& need : own(scene, settings, width, height)) needs.push_back(std::move(need));
     return needs;
@@ -34,7 +59,8 @@ MemoryEstimate gpu_memory(MemoryEstimate own) {
 }
 
 GpuMethod::GpuMethod(const Settings& settings)
-    : frame_settings_{settings.integer("shadow_resolution"), static_cast<float>(settings.real("shadow_bias"))} {}
+    : frame_settings_{settings.integer("shadow_resolution"), static_cast<float>(settings.real("shadow_bias"))},
+      resolution_(ResolutionSettings::from(settings)) {}
 
 void GpuMethod::prepare(const Scene& scene) {
   context_ = &gpu::Context::current();
@@ -63,7 +89,11 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
     height_ = inputs.height;
   }
   frame_.bind();
-  render_airlight(frame_, airlight_, timer);
+  build_frame(frame_, timer);
+  if (resolution_.reduces())
+    render_reduced(timer);
+  else
+    render_airlight(frame_, airlight_, timer);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   if (engine) write_engine_target(engine->target, frame_, airlight_, timer);
   times_ = timer.results();
@@ -71,7 +101,29 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
   context_->check("render");
 }
 
-FrameNumbers GpuMethod::numbers() const { return {times_, stats()}; }
+// The method on the coarse grid, upsampled; with bilateral upsampling, again
+// on the full grid where the upsampling failed (ReducedResolution).
+void GpuMethod::render_reduced(PassTimer& timer) {
+  resolution_.reduce(frame_, timer);
+  render_airlight(frame_, resolution_.coarse_target(), timer);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  coarse_stats_ = stats();
+  if (!resolution_.upsample(frame_, airlight_, recompute_halo(), timer)) return;
+  render_airlight(frame_, resolution_.recompute_target(), timer);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  resolution_.merge(frame_, airlight_, timer);
+}
+
+// The method's counters — of its coarse run when the resolution is reduced,
+// with the fraction of pixels recomputed.
+std::vector<std::pair<std::string, double>> GpuMethod::frame_stats() const {
+  if (!resolution_.reduces()) return stats();
+  auto s = coarse_stats_;
+  s.emplace_back("recomputed_fraction", resolution_.recomputed_fraction());
+  return s;
+}
+
+FrameNumbers GpuMethod::numbers() const { return {times_, frame_stats()}; }
 
 FrameImages GpuMethod::read_back() const {
   if (!rendered_) throw Failure("read_back() before render_frame()");
@@ -82,7 +134,7 @@ FrameImages GpuMethod::read_back() const {
   images.surface = gpu::read_image(frame_.surface(), width_, height_);
   images.times = times_;
   images.readback_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  images.stats = stats();
+  images.stats = frame_stats();
   context_->check("read back");
   return images;
 }

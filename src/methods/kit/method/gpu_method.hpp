@@ -9,6 +9,7 @@
 // In an engine's frame the results go to the engine's textures instead.
 #include "gpu/timer.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
+#include "methods/kit/resolution/reduced_resolution.hpp"
 
 #include <airlight/engine.hpp>
 #include <airlight/method.hpp>
@@ -25,6 +26,9 @@ namespace airlight::kit {
 // The settings every GPU method shares (shadow_resolution, shadow_bias), to put
 // in front of the method's own: gpu_settings({...own specs...}).
 std::vector<SettingSpec> gpu_settings(std::vector<SettingSpec> own = {});
+// Those of a method that evaluates the airlight per pixel: gpu_settings with
+// the reduced resolution's (resolution_settings) after its own.
+std::vector<SettingSpec> per_pixel_settings(std::vector<SettingSpec> own = {});
 
 // MethodInfo::memory of a GPU method: the scene's meshes, the shadow maps,
 // which every frame with a surface term draws whatever the method, and the
@@ -44,6 +48,13 @@ protected:
   // After the frame is prepared, with the context current: what depends only
   // on the scene (tables, lattice meshes, noise tiles).
   virtual void prepare_airlight(const Scene& scene) = 0;
+  // Once per frame, before render_airlight: what depends on the frame but not
+  // on the pixel grid (a shadow volume, a light volume mesh), which a frame at
+  // reduced resolution renders on two grids.
+  virtual void build_frame(const SceneFrame& frame, PassTimer& timer) {
+    (void)frame;
+    (void)timer;
+  }
   // Writes L_air into `target` (RGBA32F, frame.width() × frame.height()), timing
   // its passes with `timer` (e.g. ScopedPass(timer, "airlight")). The frame's
   // buffers and textures are bound (SceneFrame::bind) when it is called;
@@ -53,15 +64,23 @@ protected:
   virtual bool uses_shadow_maps() const { return true; }
   // Method-specific counters for FrameImages::stats.
   virtual std::vector<std::pair<std::string, double>> stats() const { return {}; }
+  // With reduced resolution (resolution_settings()): how far, in pixels
+  // (Chebyshev), the method's result at a pixel reads other pixels' results
+  // of the same frame — what a recomputed pixel needs recomputed around it.
+  virtual int recompute_halo() const { return 0; }
 
 private:
   void draw(const FrameInputs& inputs, const EngineFrame* engine);
+  void render_reduced(PassTimer& timer);
+  std::vector<std::pair<std::string, double>> frame_stats() const;
 
   FrameSettings frame_settings_;
   gpu::Context* context_ = nullptr;
   SceneFrame frame_;
   Texture airlight_;
   int width_ = 0, height_ = 0;
+  ReducedResolution resolution_;
+  std::vector<std::pair<std::string, double>> coarse_stats_;  // the method's, of its run on the coarse grid
   std::vector<PassTime> times_;
   bool rendered_ = false;
 };
