@@ -1,5 +1,6 @@
 #include "gpu/context.hpp"
 #include "gpu/program.hpp"
+#include "gpu/query.hpp"
 #include "gpu/timer.hpp"
 
 #include <airlight/error.hpp>
@@ -67,6 +68,50 @@ TEST(Gpu, ComputeProgramWithIncludesAndDefinesWritesABuffer) {
   EXPECT_EQ(times[0].pass, "fill");
   EXPECT_GE(times[0].seconds, 0.0);
   context.check("fill");
+}
+
+// The GPU's path (timestamp queries, forced on llvmpipe): frames end without
+// a wait, ready() polls, giving the newest frame the GPU has written and never
+// one older than it gave before; once the GPU is idle, the last frame; wait()
+// is the one read that may wait, and is counted.
+TEST(Gpu, PassTimerReadsFramesLaterWithoutWaiting) {
+  Context& context = Context::headless();
+  force_timestamp_queries(true);
+  PassTimer timer;
+  force_timestamp_queries(false);
+  const Program program = make_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 0.5\n");
+  const Buffer buffer = make_buffer(64 * sizeof(float), nullptr);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
+  glUseProgram(program.id());
+  set_uniform(program, "count", 64);
+  EXPECT_EQ(timer.ready().frame, -1);  // no frame ended
+  const std::int64_t waits = blocking_query_reads();
+  std::int64_t newest = -1;
+  constexpr int frames = 6;  // more than the 4 kept in flight: the oldest are dropped unread
+  for (int frame = 0; frame < frames; ++frame) {
+    {
+      ScopedPass pass(timer, "fill");
+      glDispatchCompute(1, 1, 1);
+    }
+    timer.end_frame();
+    const FrameTimes ready = timer.ready();
+    EXPECT_LE(ready.frame, frame);
+    EXPECT_GE(ready.frame, newest);
+    newest = ready.frame;
+  }
+  EXPECT_EQ(blocking_query_reads(), waits);
+  glFinish();
+  const FrameTimes idle = timer.ready();
+  EXPECT_EQ(idle.frame, frames - 1);
+  ASSERT_EQ(idle.times.size(), 1u);
+  EXPECT_EQ(idle.times[0].pass, "fill");
+  EXPECT_EQ(timer.wait().frame, frames - 1);  // nothing newer ended: the same frame, no query read
+  EXPECT_EQ(blocking_query_reads(), waits);
+  timer.begin("fill");
+  timer.end();
+  EXPECT_EQ(timer.results().size(), 1u);  // a one-shot measurement waits for its two timestamps
+  EXPECT_EQ(blocking_query_reads(), waits + 2);
+  context.check("timer frames");
 }
 
 // The cache compiles a define set once, and after clear_program_cache again.
