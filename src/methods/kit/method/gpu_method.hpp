@@ -12,6 +12,7 @@
 
 #include <airlight/engine.hpp>
 #include <airlight/method.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -62,7 +63,7 @@ private:
   SceneFrame frame_;
   Texture airlight_;
   int width_ = 0, height_ = 0;
-  std::vector<PassTime> times_;
+  std::optional<PassTimer> timer_;  // made by prepare(), in its context
   bool rendered_ = false;
 };
 
