@@ -114,6 +114,50 @@ TEST(Gpu, PassTimerReadsFramesLaterWithoutWaiting) {
   context.check("timer frames");
 }
 
+// A draw's fragment count read without waiting is the count a blocking read
+// of the same draw gives, frame after frame on the ring's queries, and
+// reading it waits for nothing.
+TEST(Gpu, InvocationCounterReadsWhatAWaitingReadWouldWithoutWaiting) {
+  Context& context = Context::headless();
+  if (!epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) GTEST_SKIP() << "no pipeline statistics";
+  constexpr int width = 64, height = 32;
+  const Texture target = make_texture(GL_TEXTURE_2D, GL_RGBA8, width, height);
+  const Framebuffer fbo = make_framebuffer();
+  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+  const VertexArray none = make_vertex_array();
+  const Program program = make_program(
+      {{GL_VERTEX_SHADER, "gpu/test_shaders/cover.vert.glsl"}, {GL_FRAGMENT_SHADER, "gpu/test_shaders/cover.frag.glsl"}});
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glViewport(0, 0, width, height);
+  glBindVertexArray(none.id());
+  glUseProgram(program.id());
+  GLuint id = 0;
+  glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
+  const Query waited(id);
+  glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, waited.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+  const double expected = static_cast<double>(wait_query(waited));
+  EXPECT_GE(expected, double(width * height));  // every pixel shaded at least once
+
+  InvocationCounter counter;
+  counter.prepare();
+  EXPECT_FALSE(counter.latest());  // nothing counted yet
+  const std::int64_t waits = blocking_query_reads();
+  for (int frame = 0; frame < 6; ++frame) {  // more than the 4 counts kept in flight
+    counter.begin();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    counter.end();
+    if (frame % 2 == 0) continue;  // two frames in flight before each read
+    glFinish();
+    ASSERT_TRUE(counter.latest());
+    EXPECT_EQ(*counter.latest(), expected) << "frame " << frame;
+  }
+  EXPECT_EQ(blocking_query_reads(), waits);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  context.check("invocation counter");
+}
+
 // The cache compiles a define set once, and after clear_program_cache again.
 TEST(Gpu, ProgramCacheCompilesOnceUntilCleared) {
   Context& context = Context::headless();

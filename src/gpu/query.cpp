@@ -13,12 +13,15 @@ constexpr size_t counts_in_flight = 4;
 
 }  // namespace
 
+// One read that leaves `value` alone while the result is not there, rather
+// than an availability check and a read: llvmpipe recomputes a pipeline
+// statistics result at each fetch, scaling it again (docs/decisions.md "The
+// method's own time and frames that never wait").
 std::optional<GLuint64> poll_query(const Query& query) {
-  GLuint available = GL_FALSE;
-  glGetQueryObjectuiv(query.id(), GL_QUERY_RESULT_AVAILABLE, &available);
-  if (!available) return std::nullopt;
-  GLuint64 value = 0;
+  constexpr GLuint64 unwritten = ~GLuint64{0};
+  GLuint64 value = unwritten;
   glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT_NO_WAIT, &value);
+  if (value == unwritten) return std::nullopt;
   return value;
 }
 
