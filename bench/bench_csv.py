@@ -19,6 +19,9 @@ def settings(row):
 
 
 def own(row):
-    """The median seconds of the method's own passes (all but the shared frame's)."""
+    """The method's own time, `own_median_s` (None for a run without own passes); in a CSV from
+    before that column, the sum of its own passes' medians (all but the shared frame's)."""
+    if 'own_median_s' in row:
+        return float(row['own_median_s']) if row['own_median_s'] else None
     return sum(float(v) for k, v in row.items()
                if k.endswith('_median_s') and k != 'frame_median_s' and k[:-len('_median_s')] not in FRAME_PASSES and v)

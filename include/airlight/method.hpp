@@ -13,6 +13,7 @@
 #include <airlight/scene.hpp>
 #include <airlight/settings.hpp>
 #include <airlight/timing.hpp>
+#include <cstdint>
 #include <functional>
 #include <glm/mat4x4.hpp>
 #include <memory>
@@ -69,9 +70,15 @@ struct AIRLIGHT_API FrameImages {
   std::vector<std::pair<std::string, double>> stats;  // method-specific counters
 };
 
-// The last frame's pass times and counters without its images: what an
-// interactive caller shows every frame without paying for read_back.
+// Pass times and counters without images: what an interactive caller shows
+// every frame without paying for read_back. Reading them never waits for the
+// GPU, so they are of the newest frame whose results the GPU has written:
+// `frame`, counting the frames rendered since prepare() from 0 (-1: none yet;
+// the last frame once the GPU is idle). Counters a method reads from GPU queries
+// (fragments) are likewise of a frame the GPU has finished; the others are the
+// last frame's.
 struct AIRLIGHT_API FrameNumbers {
+  std::int64_t frame = -1;
   std::vector<PassTime> times;
   std::vector<std::pair<std::string, double>> stats;
 };
@@ -89,8 +96,8 @@ public:
   virtual void render_frame(const FrameInputs& inputs, const EngineFrame& engine);
   // The last frame: its images (read from the GPU), pass times and counters.
   virtual FrameImages read_back() const = 0;
-  // The last frame's times and counters alone; empty for a method that has
-  // none without read_back (the CPU reference).
+  // Times and counters alone, without waiting (FrameNumbers); empty for a
+  // method that has none without read_back (the CPU reference).
   virtual FrameNumbers numbers() const { return {}; }
 };
 

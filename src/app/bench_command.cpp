@@ -53,8 +53,6 @@ Measurement measure(const Variant& variant, const Scene& scene, Size size, const
   m.stats = last.stats;
   for (const auto& [name, value] : last.stats)
     if (name == "light_samples" || name == "fragments") m.samples = std::max(value, 0.0);
-  for (const auto& [pass, seconds] : m.pass_median_s)
-    if (!frame_pass(pass)) m.method_s += seconds;
   const ImageError error = compare_images(last.airlight, reference);
   m.rel_rmse = error.rel_rmse;
   m.max_abs = error.max_abs;

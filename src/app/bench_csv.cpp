@@ -38,7 +38,7 @@ void write_csv_table(const std::string& file, const std::vector<std::vector<std:
 void write_measurements(const std::string& file, const std::vector<Measurement>& rows) {
   const auto passes = pass_names(rows);
   std::vector<std::string> header{"scene", "width", "height", "method", "settings", "frames",
-                                  "frame_median_s", "frame_min_s", "frame_max_s", "first_frame_s"};
+                                  "frame_median_s", "frame_min_s", "frame_max_s", "first_frame_s", "own_median_s"};
   for (const auto& pass : passes) header.push_back(pass + "_median_s");
   header.insert(header.end(),
                 {"gpu_mib", "peak_rss_mib", "rel_rmse", "max_abs", "ns_per_sample", "floor_ratio", "stats"});
@@ -46,14 +46,15 @@ void write_measurements(const std::string& file, const std::vector<Measurement>&
   for (const auto& m : rows) {
     std::vector<std::string> row{m.scene, std::to_string(m.size.width), std::to_string(m.size.height), m.method,
                                  m.settings, std::to_string(m.frames), csv_number(m.frame.median),
-                                 csv_number(m.frame.min), csv_number(m.frame.max), csv_number(m.first_frame_s)};
+                                 csv_number(m.frame.min), csv_number(m.frame.max), csv_number(m.first_frame_s),
+                                 m.own_median_s ? csv_number(*m.own_median_s) : ""};
     for (const auto& pass : passes) {
       const auto it = std::find_if(m.pass_median_s.begin(), m.pass_median_s.end(),
                                    [&](const auto& p) { return p.first == pass; });
       row.push_back(it == m.pass_median_s.end() ? "" : csv_number(it->second));
     }
     row.insert(row.end(), {csv_number(m.gpu_mib), csv_number(m.peak_rss_mib), csv_number(m.rel_rmse), csv_number(m.max_abs)});
-    const double ns = m.samples > 0.0 ? m.method_s / m.samples * 1e9 : 0.0;
+    const double ns = m.samples > 0.0 ? m.own_median_s.value_or(0.0) / m.samples * 1e9 : 0.0;
     row.push_back(ns > 0.0 ? csv_number(ns) : "");
     row.push_back(ns > 0.0 && m.floor_ns > 0.0 ? csv_number(ns / m.floor_ns) : "");
     std::string stats;

@@ -4,48 +4,42 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <optional>
 
 namespace airlight::app {
 
 namespace {
 
-// The cheapest run (median frame time) of `method` in the group with rRMSE ≤ E,
-// or of the brute-force baseline when `method` is empty.
-const Measurement* cheapest(const std::vector<const Measurement*>& group, const std::string& method, double e,
-                            bool baseline_only = false) {
+// What a ranking compares: a run's median frame time, or its own time (none
+// for a run without own passes, which that ranking leaves out).
+using Time = std::optional<double> (*)(const Measurement&);
+std::optional<double> frame_time(const Measurement& m) { return m.frame.median; }
+std::optional<double> own_time(const Measurement& m) { return m.own_median_s; }
+
+bool is_baseline(const Measurement& m) { return m.baseline; }
+
+// The cheapest run by `time` among those `wanted` with rRMSE ≤ E.
+const Measurement* cheapest(const std::vector<const Measurement*>& group, const std::function<bool(const Measurement&)>& wanted,
+                            double e, Time time) {
   const Measurement* best = nullptr;
-  for (const auto* m : group) {
-    const bool wanted = baseline_only ? m->baseline : m->method == method;
-    if (wanted && m->rel_rmse <= e && (!best || m->frame.median < best->frame.median)) best = m;
-  }
+  for (const auto* m : group)
+    if (wanted(*m) && m->rel_rmse <= e && time(*m) && (!best || *time(*m) < *time(*best))) best = m;
   return best;
 }
 
-// One row per (scene, size) and method: its cheapest run reaching rRMSE ≤ E and
-// that run's time over the baseline's, or a note saying which is missing.
-std::vector<std::vector<std::string>> equal_quality_table(const std::vector<Measurement>& rows, double e,
-                                                          const std::vector<std::string>& methods) {
-  std::vector<std::vector<std::string>> table{{"scene", "width", "height", "method", "settings", "frame_median_s",
-                                               "rel_rmse", "time_ratio", "time_ratio_best", "note"}};
-  for (const auto& group : cases(rows)) {
-    const Measurement& c = *group.front();
-    const Measurement* baseline = cheapest(group, "", e, true);
-    const Measurement* best = cheapest(group, "raymarch", e);  // any raymarch settings: the best run
-    for (const auto& method : methods) {
-      std::vector<std::string> row{c.scene, std::to_string(c.size.width), std::to_string(c.size.height), method};
-      const Measurement* m = cheapest(group, method, e);
-      if (!m) {
-        row.insert(row.end(), {"", "", "", "", "", "no run reaches rRMSE <= " + csv_number(e)});
-      } else {
-        row.insert(row.end(), {m->settings, csv_number(m->frame.median), csv_number(m->rel_rmse)});
-        row.push_back(baseline ? csv_number(m->frame.median / baseline->frame.median) : "");
-        row.push_back(best ? csv_number(m->frame.median / best->frame.median) : "");
-        row.push_back(baseline ? "" : "no baseline: no raymarch run with sampling=uniform jitter=none reaches rRMSE <= " + csv_number(e));
-      }
-      table.push_back(std::move(row));
-    }
-  }
-  return table;
+// One ranking's columns for `method`: its cheapest run by `time` reaching E
+// (settings, time, rRMSE) and that time over the brute-force baseline's and
+// over the best raymarch run's, both the cheapest by the same `time`.
+std::vector<std::string> ranked(const std::vector<const Measurement*>& group, const std::string& method, double e,
+                                Time time) {
+  const auto of = [](const std::string& name) { return [name](const Measurement& m) { return m.method == name; }; };
+  const Measurement* m = cheapest(group, of(method), e, time);
+  if (!m) return {"", "", "", "", ""};
+  const Measurement* baseline = cheapest(group, is_baseline, e, time);
+  const Measurement* best = cheapest(group, of("raymarch"), e, time);  // any raymarch settings: the best run
+  const auto ratio = [&](const Measurement* over) { return over ? csv_number(*time(*m) / *time(*over)) : ""; };
+  return {m->settings, csv_number(*time(*m)), csv_number(m->rel_rmse), ratio(baseline), ratio(best)};
 }
 
 // Columns padded to their widest cell.
@@ -67,12 +61,38 @@ std::filesystem::path equal_quality_file(const std::filesystem::path& csv) {
 
 }  // namespace
 
+std::vector<std::vector<std::string>> equal_quality_table(const std::vector<Measurement>& rows, double e,
+                                                          const std::vector<std::string>& methods) {
+  std::vector<std::vector<std::string>> table{{"scene", "width", "height", "method", "settings", "frame_median_s",
+                                               "rel_rmse", "time_ratio", "time_ratio_best", "own_settings",
+                                               "own_median_s", "own_rel_rmse", "own_ratio", "own_ratio_best", "note"}};
+  for (const auto& group : cases(rows)) {
+    const Measurement& c = *group.front();
+    const bool baseline = cheapest(group, is_baseline, e, frame_time);
+    for (const auto& method : methods) {
+      std::vector<std::string> row{c.scene, std::to_string(c.size.width), std::to_string(c.size.height), method};
+      const auto by_frame = ranked(group, method, e, frame_time), by_own = ranked(group, method, e, own_time);
+      row.insert(row.end(), by_frame.begin(), by_frame.end());
+      row.insert(row.end(), by_own.begin(), by_own.end());
+      if (by_frame[1].empty()) row.push_back("no run reaches rRMSE <= " + csv_number(e));
+      else if (!baseline)
+        row.push_back("no baseline: no raymarch run with sampling=uniform jitter=none reaches rRMSE <= " + csv_number(e));
+      else row.push_back("");
+      table.push_back(std::move(row));
+    }
+  }
+  return table;
+}
+
 void write_equal_quality(const std::vector<Measurement>& rows, double e, const std::vector<std::string>& methods,
                          const std::string& csv) {
   const auto table = equal_quality_table(rows, e, methods);
-  std::printf("equal quality: the cheapest run with rRMSE <= %s; time_ratio: its median frame time over the "
-              "cheapest raymarch run with jitter=none that reaches it (brute force); time_ratio_best: over the "
-              "cheapest raymarch run of any settings that reaches it\n",
+  std::printf("equal quality: the cheapest run with rRMSE <= %s, ranked twice. By frame time: settings, "
+              "frame_median_s, rel_rmse; time_ratio: its median frame time over the cheapest raymarch run with "
+              "jitter=none that reaches it (brute force); time_ratio_best: over the cheapest raymarch run of any "
+              "settings that reaches it. By own time (the method's passes alone: no G-buffer, shadow maps or "
+              "read-back), each chosen by own time: own_settings, own_median_s, own_rel_rmse, own_ratio, "
+              "own_ratio_best\n",
               csv_number(e).c_str());
   print_table(table);
   write_csv_table(equal_quality_file(csv), table);

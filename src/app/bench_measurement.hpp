@@ -3,6 +3,7 @@
 // a scene at a size, where the plots and the equal-quality table compare them.
 #include "app/scene_source.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,10 +21,13 @@ struct Measurement {
   int frames = 0;
   Spread frame;
   std::vector<std::pair<std::string, double>> pass_median_s;  // in the order the frame runs them
+  // The method's own time (README "Benchmarking"): the median over the timed
+  // frames of each frame's sum of its own passes (all but the shared frame's:
+  // frame_pass). None for a run without own passes (the CPU reference).
+  std::optional<double> own_median_s;
   double gpu_mib = 0.0, peak_rss_mib = 0.0, rel_rmse = 0.0, max_abs = 0.0;
   bool baseline = false;  // raymarch, uniform steps without jitter: brute force, the equal-quality yardstick
   double samples = 0.0;   // light samples (marches) or fragments (planes) of a frame; 0: not a sampling method
-  double method_s = 0.0;  // the median seconds of the method's own passes (all but the shared frame's)
   double floor_ns = 0.0;  // the floor's ns per sample at this size; 0: not timed
   double first_frame_s = 0.0;  // the first frame: it compiles the programs of a new define set
   std::vector<std::pair<std::string, double>> stats;  // the method's counters of the last frame

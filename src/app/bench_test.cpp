@@ -1,7 +1,13 @@
 // `airlight bench` end to end: a tiny sweep's CSV, plot and equal-quality
-// report, and its bad arguments (exit 2 naming the option and the key).
+// report, and its bad arguments (exit 2 naming the option and the key); and
+// the own time and its ranking on constructed runs.
+#include "app/bench_csv.hpp"
+#include "app/bench_equal_quality.hpp"
+#include "app/bench_timing.hpp"
 #include "app/command_test_support.hpp"
 #include "core/image_io.hpp"
+
+#include <optional>
 
 namespace airlight {
 namespace {
@@ -47,6 +53,19 @@ TEST(Bench, RaymarchStepsSweepWritesFallingErrorPlotAndEqualQuality) {
     EXPECT_GT(std::stod(rows[i][airlight]), 0.0);
     EXPECT_GT(std::stod(rows[i][column(rows, "gpu_mib")]), 0.0);
     EXPECT_LE(std::stod(rows[i][column(rows, "frame_min_s")]), std::stod(rows[i][frame]));
+    // The median of two frames is their mean, which is linear: the median of
+    // the frames' own-pass sums is the sum of the own passes' medians, up to
+    // the CSV's 6 significant digits in each (5e-6 relative apiece).
+    double own_passes = 0.0;
+    for (size_t c = 0; c < rows[0].size(); ++c) {
+      const std::string& name = rows[0][c];
+      const std::string pass = name.substr(0, name.size() - std::string("_median_s").size());
+      if (name.ends_with("_median_s") && name != "frame_median_s" && name != "own_median_s" && !rows[i][c].empty() &&
+          !app::frame_pass(pass))
+        own_passes += std::stod(rows[i][c]);
+    }
+    EXPECT_NEAR(std::stod(rows[i][column(rows, "own_median_s")]), own_passes, 2e-5 * own_passes);
+    EXPECT_GT(own_passes, 0.0);
     if (i > 1) {
       EXPECT_LT(std::stod(rows[i][error]), std::stod(rows[i - 1][error])) << "steps row " << i;
     }
@@ -130,6 +149,73 @@ TEST(Bench, EqualQualityWithCsvDashIsRefused) {
             "airlight: error: --equal-quality: --csv -: its table is written beside the CSV file, as "
             "FILE-equal-quality.csv, and standard output is no file: give --csv FILE\n");
   EXPECT_EQ(o.out, "");
+}
+
+// Own time is per frame summed, then the median over the frames — not the
+// sum of each pass's median. Times are exact binary fractions: exact sums.
+TEST(BenchOwnTime, IsTheMedianOverFramesOfEachFramesOwnPassSum) {
+  const std::vector<std::vector<PassTime>> frames{
+      {{"gbuffer", 1.0}, {"airlight", 1.0}, {"gather", 10.0}, {"readback", 0.5}},
+      {{"gbuffer", 1.0}, {"airlight", 1.0}, {"airlight", 1.0}, {"gather", 2.0}},  // a pass twice: summed
+      {{"gbuffer", 5.0}, {"shadow", 0.25}, {"airlight", 10.0}, {"gather", 1.0}}};
+  app::Measurement m;
+  app::summarize_passes(frames, &m);
+  // Own sums 11, 4, 11: median 11; the passes' medians (airlight 2, gather 2) would sum to 4.
+  ASSERT_TRUE(m.own_median_s);
+  EXPECT_EQ(*m.own_median_s, 11.0);
+  const std::vector<std::pair<std::string, double>> passes{
+      {"gbuffer", 1.0}, {"airlight", 2.0}, {"gather", 2.0}, {"readback", 0.5}, {"shadow", 0.25}};
+  EXPECT_EQ(m.pass_median_s, passes);
+
+  app::Measurement reference;  // no own pass (the CPU reference): no own time, rather than 0
+  app::summarize_passes({{{"readback", 0.5}}}, &reference);
+  EXPECT_FALSE(reference.own_median_s);
+}
+
+app::Measurement measured(const std::string& method, const std::string& settings, double frame_s,
+                     std::optional<double> own_s, double rel_rmse, bool baseline = false) {
+  app::Measurement m;
+  m.scene = "case";
+  m.size = {64, 48};
+  m.method = method;
+  m.settings = settings;
+  m.frame.median = frame_s;
+  m.own_median_s = own_s;
+  m.rel_rmse = rel_rmse;
+  m.baseline = baseline;
+  return m;
+}
+
+// Ranked by own time, the table picks other runs than by frame time, and
+// each ratio is over the runs its own ranking picks.
+TEST(BenchOwnTime, EqualQualityRanksByOwnTimeApartFromFrameTime) {
+  const std::vector<app::Measurement> rows{
+      measured("raymarch", "uniform", 1.0, 0.6, 0.01, true),  // brute force: the cheapest by own time
+      measured("raymarch", "equiangular", 0.9, 0.7, 0.01),    // the cheapest raymarch by frame time
+      measured("x", "a", 0.5, 0.4, 0.01),                     // x's cheapest frame
+      measured("x", "b", 0.6, 0.1, 0.01),                     // x's cheapest own time
+      measured("x", "c", 0.1, 0.05, 0.5),                     // cheaper still, but misses E
+      measured("reference", "", 100.0, std::nullopt, 0.0)};   // no own passes
+  const auto table = app::equal_quality_table(rows, 0.05, {"raymarch", "x", "reference"});
+  ASSERT_EQ(table.size(), 4u);
+  const auto cell = [&](size_t row, const std::string& name) {
+    return table[row][static_cast<size_t>(std::find(table[0].begin(), table[0].end(), name) - table[0].begin())];
+  };
+  const auto number = [](double v) { return app::csv_number(v); };
+  EXPECT_EQ(cell(1, "settings"), "equiangular");
+  EXPECT_EQ(cell(1, "own_settings"), "uniform");
+  EXPECT_EQ(cell(2, "settings"), "a");
+  EXPECT_EQ(cell(2, "frame_median_s"), number(0.5));
+  EXPECT_EQ(cell(2, "time_ratio"), number(0.5 / 1.0));       // over brute force's frame
+  EXPECT_EQ(cell(2, "time_ratio_best"), number(0.5 / 0.9));  // over the equiangular run's frame
+  EXPECT_EQ(cell(2, "own_settings"), "b");
+  EXPECT_EQ(cell(2, "own_median_s"), number(0.1));
+  EXPECT_EQ(cell(2, "own_rel_rmse"), number(0.01));
+  EXPECT_EQ(cell(2, "own_ratio"), number(0.1 / 0.6));       // over brute force's own time
+  EXPECT_EQ(cell(2, "own_ratio_best"), number(0.1 / 0.6));  // brute force is raymarch's cheapest by own time
+  EXPECT_EQ(cell(3, "settings"), "");                       // the reference's run, by frame time
+  EXPECT_EQ(cell(3, "frame_median_s"), number(100.0));
+  EXPECT_EQ(cell(3, "own_median_s"), "");  // not ranked by own time
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "gpu/context.hpp"
 #include "gpu/program.hpp"
+#include "gpu/query.hpp"
 #include "gpu/timer.hpp"
 
 #include <airlight/error.hpp>
@@ -67,6 +68,94 @@ TEST(Gpu, ComputeProgramWithIncludesAndDefinesWritesABuffer) {
   EXPECT_EQ(times[0].pass, "fill");
   EXPECT_GE(times[0].seconds, 0.0);
   context.check("fill");
+}
+
+// The GPU's path (timestamp queries, forced on llvmpipe): frames end without
+// a wait, ready() polls, giving the newest frame the GPU has written and never
+// one older than it gave before; once the GPU is idle, the last frame; wait()
+// is the one read that may wait, and is counted.
+TEST(Gpu, PassTimerReadsFramesLaterWithoutWaiting) {
+  Context& context = Context::headless();
+  force_timestamp_queries(true);
+  PassTimer timer;
+  force_timestamp_queries(false);
+  const Program program = make_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 0.5\n");
+  const Buffer buffer = make_buffer(64 * sizeof(float), nullptr);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
+  glUseProgram(program.id());
+  set_uniform(program, "count", 64);
+  EXPECT_EQ(timer.ready().frame, -1);  // no frame ended
+  const std::int64_t waits = blocking_query_reads();
+  std::int64_t newest = -1;
+  constexpr int frames = 6;  // more than the 4 kept in flight: the oldest are dropped unread
+  for (int frame = 0; frame < frames; ++frame) {
+    {
+      ScopedPass pass(timer, "fill");
+      glDispatchCompute(1, 1, 1);
+    }
+    timer.end_frame();
+    const FrameTimes ready = timer.ready();
+    EXPECT_LE(ready.frame, frame);
+    EXPECT_GE(ready.frame, newest);
+    newest = ready.frame;
+  }
+  EXPECT_EQ(blocking_query_reads(), waits);
+  glFinish();
+  const FrameTimes idle = timer.ready();
+  EXPECT_EQ(idle.frame, frames - 1);
+  ASSERT_EQ(idle.times.size(), 1u);
+  EXPECT_EQ(idle.times[0].pass, "fill");
+  EXPECT_EQ(timer.wait().frame, frames - 1);  // nothing newer ended: the same frame, no query read
+  EXPECT_EQ(blocking_query_reads(), waits);
+  timer.begin("fill");
+  timer.end();
+  EXPECT_EQ(timer.results().size(), 1u);  // a one-shot measurement waits for its two timestamps
+  EXPECT_EQ(blocking_query_reads(), waits + 2);
+  context.check("timer frames");
+}
+
+// A draw's fragment count read without waiting is the count a blocking read
+// of the same draw gives, frame after frame on the ring's queries, and
+// reading it waits for nothing.
+TEST(Gpu, InvocationCounterReadsWhatAWaitingReadWouldWithoutWaiting) {
+  Context& context = Context::headless();
+  if (!epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) GTEST_SKIP() << "no pipeline statistics";
+  constexpr int width = 64, height = 32;
+  const Texture target = make_texture(GL_TEXTURE_2D, GL_RGBA8, width, height);
+  const Framebuffer fbo = make_framebuffer();
+  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+  const VertexArray none = make_vertex_array();
+  const Program program = make_program(
+      {{GL_VERTEX_SHADER, "gpu/test_shaders/cover.vert.glsl"}, {GL_FRAGMENT_SHADER, "gpu/test_shaders/cover.frag.glsl"}});
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glViewport(0, 0, width, height);
+  glBindVertexArray(none.id());
+  glUseProgram(program.id());
+  GLuint id = 0;
+  glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
+  const Query waited(id);
+  glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, waited.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+  const double expected = static_cast<double>(wait_query(waited));
+  EXPECT_GE(expected, double(width * height));  // every pixel shaded at least once
+
+  InvocationCounter counter;
+  counter.prepare();
+  EXPECT_FALSE(counter.latest());  // nothing counted yet
+  const std::int64_t waits = blocking_query_reads();
+  for (int frame = 0; frame < 6; ++frame) {  // more than the 4 counts kept in flight
+    counter.begin();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    counter.end();
+    if (frame % 2 == 0) continue;  // two frames in flight before each read
+    glFinish();
+    ASSERT_TRUE(counter.latest());
+    EXPECT_EQ(*counter.latest(), expected) << "frame " << frame;
+  }
+  EXPECT_EQ(blocking_query_reads(), waits);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  context.check("invocation counter");
 }
 
 // The cache compiles a define set once, and after clear_program_cache again.

@@ -63,11 +63,15 @@ void Viewer::method_panel() {
 
 void Viewer::numbers_panel() {
   const auto [width, height] = shown_size();
+  const auto method_frame = static_cast<long long>(numbers_.frame);
   if (idle_)
-    ImGui::Text("idle: the view is unchanged (last: method %.1f ms at %dx%d)", 1e3 * render_s_, width, height);
+    ImGui::Text("idle: the view is unchanged (last: method frame %lld, %.1f ms at %dx%d)", method_frame,
+                1e3 * render_s_, width, height);
   else
-    ImGui::Text("frame %.1f ms (%.1f fps), method %.1f ms at %dx%d", 1e3 * frame_s_,
-                frame_s_ > 0 ? 1.0 / frame_s_ : 0.0, 1e3 * render_s_, width, height);
+    ImGui::Text("frame %lld: %.1f ms (%.1f fps); method frame %lld: %.1f ms at %dx%d",
+                static_cast<long long>(frames_), 1e3 * frame_s_, frame_s_ > 0 ? 1.0 / frame_s_ : 0.0, method_frame,
+                1e3 * render_s_, width, height);
+  ImGui::Text("passes of method frame %lld:", method_frame);
   for (const PassTime& t : numbers_.times) ImGui::Text("  %-10s %8.2f ms", t.pass.c_str(), 1e3 * t.seconds);
   for (const auto& [name, value] : numbers_.stats) ImGui::Text("  %s %.6g", name.c_str(), value);
   error_panel();

@@ -191,6 +191,7 @@ void Viewer::frame() {
   const auto now = std::chrono::steady_clock::now();
   frame_s_ = std::chrono::duration<double>(now - last_frame_).count();
   last_frame_ = now;
+  ++frames_;
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
@@ -252,7 +253,7 @@ void Viewer::render(int width, int height, Targets& target) {
   method_->render_frame(inputs, engine);
   glFinish();  // the frame's time is until its last pixel
   render_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  numbers_ = method_->numbers();
+  numbers_ = method_->numbers();  // the GPU is idle: this frame's, as render_s_
   shown_ = &target;
 }
 

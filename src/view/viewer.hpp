@@ -137,8 +137,9 @@ private:
   bool dragging_divider_ = false;
 
   int selected_light_ = 0;
+  std::int64_t frames_ = 0;  // the window's frames shown, which frame_s_ ends
   double frame_s_ = 0.0, render_s_ = 0.0;
-  FrameNumbers numbers_;
+  FrameNumbers numbers_;  // its `frame` is the method's (FrameNumbers), which render_s_ timed too
   std::string status_;
   std::filesystem::path window_capture_;  // written by the next frame before it is swapped
   char screenshot_path_[256] = "airlight_view.png", scene_path_[256] = "airlight_view.json";

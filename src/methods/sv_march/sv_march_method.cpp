@@ -74,12 +74,12 @@ private:
                                                       frame.defines() + kit::lit_interval_defines() +
                                                           kit::CountedDraw::defines());
     glBindImageTexture(0, bounds_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-    fragments_ = draw_.draw(frame, program, *shell_.triangles().on_gpu, shell_.triangle_count());
+    draw_.draw(frame, program, *shell_.triangles().on_gpu, shell_.triangle_count());
   }
 
   std::vector<std::pair<std::string, double>> stats() const override {
     std::vector<std::pair<std::string, double>> s = shell_.stats();
-    s.insert(s.end(), {{"fragments", fragments_}, {"light_samples", march_.light_samples()}});
+    s.insert(s.end(), {{"fragments", draw_.fragments()}, {"light_samples", march_.light_samples()}});
     return s;
   }
 
@@ -88,7 +88,6 @@ private:
   kit::MarchPass march_;
   gpu::Texture bounds_;
   int width_ = 0, height_ = 0, layers_ = 0;
-  double fragments_ = 0.0;
 };
 
 // The shells of every light's map, and the bounds' two layers per light past

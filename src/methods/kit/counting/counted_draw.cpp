@@ -28,11 +28,7 @@ void CountedDraw::prepare() {
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
   const size_t step = static_cast<size_t>(align) / std::gcd(static_cast<size_t>(align), sizeof(CountedTriangle));
   range_triangles_ = std::max<size_t>(static_cast<size_t>(block) / sizeof(CountedTriangle) / step * step, step);
-  if (epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
-    GLuint id = 0;
-    glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
-    invocations_ = gpu::Query(id);
-  }
+  invocations_.prepare();
 }
 
 // The bound range's triangles that may cross a pixel's ray, into kept_ and the
@@ -53,9 +49,8 @@ void CountedDraw::keep_crossing(const SceneFrame& frame, size_t n) {
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, kept_draw_.id());
 }
 
-double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, const gpu::Buffer& triangles,
-                         size_t count) {
-  if (count == 0) return 0.0;
+void CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, const gpu::Buffer& triangles,
+                       size_t count) {
   if (frame.width() != width_ || frame.height() != height_) {
     width_ = frame.width();
     height_ = frame.height();
@@ -70,7 +65,7 @@ double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, c
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_CLAMP);
   glBindVertexArray(no_vertices_.id());
-  if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
+  invocations_.begin();
   for (size_t first = 0; first < count; first += range_triangles_) {
     const size_t n = std::min(range_triangles_, count - first);
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, counted_binding, triangles.id(),
@@ -81,15 +76,10 @@ double CountedDraw::draw(const SceneFrame& frame, const gpu::Program& program, c
     glDrawArraysIndirect(GL_TRIANGLES, nullptr);
   }
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-  GLuint64 fragments = 0;
-  if (invocations_) {
-    glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-    glGetQueryObjectui64v(invocations_.id(), GL_QUERY_RESULT, &fragments);
-  }
+  invocations_.end();
   glDisable(GL_DEPTH_CLAMP);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  return static_cast<double>(fragments);
 }
 
 }  // namespace airlight::kit

@@ -1,6 +1,7 @@
 #pragma once
 #include "gpu/gl.hpp"
 #include "gpu/growing_buffer.hpp"
+#include "gpu/query.hpp"
 #include "methods/kit/counting/counted_triangles.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
 
@@ -34,9 +35,11 @@ public:
   static std::string defines() { return "#define KEPT_TRIANGLES\n"; }
 
   // Draws records [0, count) of `triangles` with `program` (its vertex stage
-  // crossings.vert.glsl, the records at BINDING_COUNTED); returns the fragment
-  // shader invocations (0 without pipeline statistics).
-  double draw(const SceneFrame& frame, const gpu::Program& program, const gpu::Buffer& triangles, size_t count);
+  // crossings.vert.glsl, the records at BINDING_COUNTED).
+  void draw(const SceneFrame& frame, const gpu::Program& program, const gpu::Buffer& triangles, size_t count);
+  // The fragment shader invocations of the newest draw the GPU has finished,
+  // read without waiting (0 before the first, or without pipeline statistics).
+  double fragments() const { return invocations_.latest().value_or(0.0); }
 
 private:
   void keep_crossing(const SceneFrame& frame, size_t n);
@@ -47,7 +50,7 @@ private:
   gpu::Framebuffer fbo_;
   gpu::VertexArray no_vertices_;
   int width_ = 0, height_ = 0;
-  gpu::Query invocations_;  // fragment shader invocations (GL_ARB_pipeline_statistics_query), when there
+  gpu::InvocationCounter invocations_;
 };
 
 }  // namespace airlight::kit

@@ -107,7 +107,7 @@ void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
   glBindImageTexture(0, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  fragments_ = counted_draw_.draw(frame, program, triangles, triangle_count);
+  counted_draw_.draw(frame, program, triangles, triangle_count);
   if (triangle_count > 0) glGetNamedBufferSubData(node_count_.id(), 0, sizeof(GLuint), &crossings_);
 }
 
@@ -174,7 +174,7 @@ void LitIntervalPass::resolve_in_passes(const SceneFrame& frame, const gpu::Prog
 
 std::vector<std::pair<std::string, double>> LitIntervalPass::stats() const {
   return {{"crossings", static_cast<double>(crossings_)},
-          {"fragments", fragments_},
+          {"fragments", counted_draw_.fragments()},
           {"redraws", static_cast<double>(redraws_)},
           {"loop_limited", static_cast<double>(loop_limited_)},
           {"passes", static_cast<double>(passes_)}};

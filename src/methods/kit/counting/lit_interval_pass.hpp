@@ -69,7 +69,6 @@ private:
   CountedDraw counted_draw_;
   int width_ = 0, height_ = 0;
   unsigned crossings_ = 0;
-  double fragments_ = 0.0;
   int redraws_ = 0;
   GLuint loop_limited_ = 0;
   bool loop_limit_ = false;         // llvmpipe: the resolve runs in passes (LOOP_LIMIT)

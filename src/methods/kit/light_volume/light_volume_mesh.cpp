@@ -107,11 +107,15 @@ void LightVolumeMesh::allocate(int grid, int layers, GLsizei triangles, int ligh
 
 void LightVolumeMesh::build(const SceneFrame& frame, gpu::PassTimer& timer) {
   gpu::ScopedPass pass(timer, "volume");
-  build_lights(frame);
+  if (!timer_) timer_.emplace();
+  {
+    gpu::ScopedPass own(*timer_, "volume");
+    build_lights(frame);
+  }
+  timer_->end_frame();
 }
 
 void LightVolumeMesh::build_lights(const SceneFrame& frame) {
-  gpu::ScopedPass pass(timer_.emplace(), "volume");
   frame.bind();
   const int lights = frame.light_count();
   ranges_.assign(static_cast<size_t>(lights), {});
@@ -258,9 +262,8 @@ std::vector<CountedTriangle> LightVolumeMesh::read_back() const {
 }
 
 double LightVolumeMesh::seconds() const {
-  if (timer_)
-    for (const PassTime& t : timer_->results()) seconds_ = t.seconds;  // the build's one pass, once: results() empties the timer
-  return seconds_;
+  const std::vector<PassTime> times = timer_ ? timer_->ready().times : std::vector<PassTime>{};
+  return times.empty() ? 0.0 : times.front().seconds;  // the build's one pass
 }
 
 namespace {

@@ -124,7 +124,9 @@ public:
   // volume_triangles (this frame's) and volume_s (seconds()).
   std::vector<std::pair<std::string, double>> stats() const override;
   std::vector<CountedTriangle> read_back() const;  // for tests and reports
-  double seconds() const;  // the last build's GPU time (gpu::PassTimer's)
+  // The GPU time of the newest build the GPU has finished (gpu::PassTimer's,
+  // read without waiting: the last build's once the GPU is idle); 0 before.
+  double seconds() const;
 
   // Each light's records are [first, first + count) of triangles().
   struct LightRange {
@@ -151,10 +153,9 @@ private:
   gpu::GrowingBuffer<CountedTriangle> triangles_;
   gpu::GrowingBuffer<GLint> eye_counts_;
   gpu::Buffer extras_;
-  // The last build's, made with it (a timer needs the context); read when
-  // asked, as reading waits for the GPU.
-  mutable std::optional<gpu::PassTimer> timer_;
-  mutable double seconds_ = 0.0;
+  // Made with the first build (a timer needs the context); kept, as the
+  // builds' queries are read frames later.
+  std::optional<gpu::PassTimer> timer_;
 };
 
 // What the meshes of the scene's lights take at the settings' grid

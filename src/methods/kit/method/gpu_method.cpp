@@ -67,6 +67,7 @@ void GpuMethod::prepare(const Scene& scene) {
   gpu::SavedState state;
   frame_.prepare(scene);
   prepare_airlight(scene);
+  timer_.emplace();  // in this context; frames count from 0
   rendered_ = false;
   context_->check("prepare");
 }
@@ -79,7 +80,7 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
   if (!context_) throw Failure("render_frame() before prepare()");
   if (engine) check_engine_frame(*engine, inputs);
   gpu::SavedState state;
-  PassTimer timer;
+  PassTimer& timer = *timer_;
   // Shadow maps for the method, or for the surface term (its lights are shadowed whatever the method).
   const bool surface = inputs.surface && (!engine || engine->target.surface);
   frame_.render(inputs, frame_settings_, engine, {uses_shadow_maps() || surface, surface}, timer);
@@ -96,7 +97,7 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
     render_airlight(frame_, airlight_, timer);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   if (engine) write_engine_target(engine->target, frame_, airlight_, timer);
-  times_ = timer.results();
+  timer.end_frame();  // its times are read when the GPU has written them: a frame never waits for its queries
   rendered_ = true;
   context_->check("render");
 }
@@ -115,15 +116,19 @@ void GpuMethod::render_reduced(PassTimer& timer) {
 }
 
 // The method's counters — of its coarse run when the resolution is reduced,
-// with the fraction of pixels recomputed.
-std::vector<std::pair<std::string, double>> GpuMethod::frame_stats() const {
+// with the fraction of pixels recomputed when `finished` (reading it back
+// waits for the frame: read_back's, not numbers()').
+std::vector<std::pair<std::string, double>> GpuMethod::frame_stats(bool finished) const {
   if (!resolution_.reduces()) return stats();
   auto s = coarse_stats_;
-  s.emplace_back("recomputed_fraction", resolution_.recomputed_fraction());
+  if (finished) s.emplace_back("recomputed_fraction", resolution_.recomputed_fraction());
   return s;
 }
 
-FrameNumbers GpuMethod::numbers() const { return {times_, frame_stats()}; }
+FrameNumbers GpuMethod::numbers() const {
+  const gpu::FrameTimes times = timer_ ? timer_->ready() : gpu::FrameTimes{};
+  return {times.frame, times.times, frame_stats(false)};
+}
 
 FrameImages GpuMethod::read_back() const {
   if (!rendered_) throw Failure("read_back() before render_frame()");
@@ -132,9 +137,10 @@ FrameImages GpuMethod::read_back() const {
   FrameImages images;
   images.airlight = gpu::read_image(airlight_, width_, height_);
   images.surface = gpu::read_image(frame_.surface(), width_, height_);
-  images.times = times_;
   images.readback_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  images.stats = frame_stats();
+  glFinish();  // the GPU has finished the frame (reading its images waited for it): its queries are in
+  images.times = timer_->wait().times;
+  images.stats = frame_stats(true);
   context_->check("read back");
   return images;
 }

@@ -13,6 +13,7 @@
 
 #include <airlight/engine.hpp>
 #include <airlight/method.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -72,7 +73,7 @@ protected:
 private:
   void draw(const FrameInputs& inputs, const EngineFrame* engine);
   void render_reduced(PassTimer& timer);
-  std::vector<std::pair<std::string, double>> frame_stats() const;
+  std::vector<std::pair<std::string, double>> frame_stats(bool finished) const;
 
   FrameSettings frame_settings_;
   gpu::Context* context_ = nullptr;
@@ -81,7 +82,7 @@ private:
   int width_ = 0, height_ = 0;
   ReducedResolution resolution_;
   std::vector<std::pair<std::string, double>> coarse_stats_;  // the method's, of its run on the coarse grid
-  std::vector<PassTime> times_;
+  std::optional<PassTimer> timer_;  // made by prepare(), in its context
   bool rendered_ = false;
 };
 

@@ -84,11 +84,7 @@ void PlanePass::prepare(const Scene& scene) {
   glVertexArrayAttribBinding(piece_mesh_.id(), 1, 0);
   no_vertices_ = gpu::make_vertex_array();
   fbo_ = gpu::make_framebuffer();
-  if (epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
-    GLuint id = 0;
-    glGenQueries(1, &id);  // Mesa's glCreateQueries refuses the statistics targets
-    invocations_ = gpu::Query(id);
-  }
+  invocations_.prepare();
   light_bounds_.prepare(scene);
   if (settings_.cut != PlaneCut::none) slab_pieces_.prepare(scene);
 }
@@ -149,14 +145,9 @@ void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
   glBindTextureUnit(jitter_unit, noise_.id());
   planes_drawn_ = 0.0;
   slab_pieces_.reset();
-  if (invocations_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, invocations_.id());
+  invocations_.begin();
   for (int i = 0; i < static_cast<int>(light_bounds_.bounds().size()); ++i) draw_light(frame, i, light_bounds_.bounds()[i]);
-  if (invocations_) {
-    glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-    GLuint64 count = 0;
-    glGetQueryObjectui64v(invocations_.id(), GL_QUERY_RESULT, &count);
-    fragments_ = static_cast<double>(count);
-  }
+  invocations_.end();
   for (GLenum c = 0; c < 8; ++c) glDisable(GL_CLIP_DISTANCE0 + c);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
@@ -253,7 +244,7 @@ void PlanePass::draw(const SceneFrame& frame, int light, Part part, const Slabs&
 
 std::vector<std::pair<std::string, double>> PlanePass::stats() const {
   std::vector<std::pair<std::string, double>> s{{"planes", planes_drawn_},
-                                                {"fragments", fragments_},
+                                                {"fragments", invocations_.latest().value_or(-1.0)},
                                                 {"rebuilt_lights", light_bounds_.rebuilt()},
                                                 {"rebuild_s", light_bounds_.seconds()}};
   if (settings_.cut == PlaneCut::none) return s;

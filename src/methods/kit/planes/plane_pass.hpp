@@ -7,6 +7,7 @@
 // (§5.3–5.4), which draw each plane as its fully lit and uncertain parts
 // (slab_pieces.hpp) instead of the lattice.
 #include "gpu/growing_buffer.hpp"
+#include "gpu/query.hpp"
 #include "methods/kit/planes/light_bounds.hpp"
 #include "methods/kit/sampling/noise.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
@@ -58,7 +59,8 @@ public:
   void run(const SceneFrame& frame, const gpu::Texture& target);
 
   // Of the last run: planes, fragment shader invocations (the planes' fragments
-  // that passed the depth test and were shaded; -1 without
+  // that passed the depth test and were shaded, of the newest run the GPU has
+  // finished, read without waiting; -1 before the first or without
   // ARB_pipeline_statistics_query), the lights whose lit region was traced
   // again and its seconds, and when cut its pieces' polygons and trees.
   std::vector<std::pair<std::string, double>> stats() const;
@@ -89,9 +91,9 @@ private:
   gpu::GrowingBuffer<PieceVertex> piece_vertices_{2};
   int piece_count_ = 0;
   gpu::Framebuffer fbo_;
-  gpu::Query invocations_;
+  gpu::InvocationCounter invocations_;
   int index_count_ = 0;
-  double planes_drawn_ = 0.0, fragments_ = -1.0;
+  double planes_drawn_ = 0.0;
 };
 
 }  // namespace airlight::kit
