@@ -6,12 +6,6 @@
 #include "optics/numerics.glsl"
 #include "optics/light.glsl"
 
-// 12-point Gauss–Legendre on [-1, 1]: the positive abscissae and their weights.
-const float SUN_GL_X[6] = float[](0.981560634247, 0.904117256370, 0.769902674194,
-                                  0.587317954287, 0.367831498998, 0.125233408511);
-const float SUN_GL_W[6] = float[](0.047175336387, 0.106939325995, 0.160078328543,
-                                  0.203167426723, 0.233492536538, 0.249147045813);
-
 // Beyond u·(tan ξ - tan ξ_lo) = 16 the integrand is below e^-16 of its start:
 // the dropped tail is below e^(1-16) ≈ 3e-7 of the integral (it is bounded by
 // e^-16/(u sec² ξ_cut) and the first e-fold holds at least e^-1/(u sec² ξ_cut)).
@@ -25,8 +19,8 @@ const float SUN_CUTOFF = 16.0;
 //   A: up to w = 1, in w itself: 1/(1 + w²) has its poles ±i far from [0, 1];
 //   B: beyond, in s = ln(w / w_b): dw/(1 + w²) = ds/(w + 1/w), whose poles stay
 //      π/2 off the real axis at every scale, and exp(-u(w - w_lo)) is entire.
-// 12 nodes on each part (one loop); its error is measured in docs/decisions.md
-// (Numerics) and on the GPU by the twin test.
+// 8 nodes on A, 12 on B, whose range in s reaches ln(16/u); their error is
+// measured in docs/decisions.md (Numerics, "Γ's cost") and on the GPU by the twin test.
 float sun_angular(float u, float w_lo, float dw, float dxi) {
   if (!(u > 1e-20)) return dxi;  // J = dxi - O(u·ln(1/u))
   float dw_cut = min(dw, SUN_CUTOFF / u);
@@ -34,13 +28,15 @@ float sun_angular(float u, float w_lo, float dw, float dxi) {
   float w_b = max(w_lo + a_len, 1.0);                        // part B starts here
   float len_b = dw_cut > a_len ? log1p_nonneg((dw_cut - a_len) / w_b) : 0.0;
   float sum_a = 0.0, sum_b = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (float side = -1.0; side <= 1.0; side += 2.0) {
+      float t = 0.5 + 0.5 * side * GAUSS8_X[i], w = w_lo + t * a_len;
+      sum_a += GAUSS8_W[i] * exp(-u * t * a_len) / (1.0 + w * w);
+    }
   for (int i = 0; i < 6; ++i)
     for (float side = -1.0; side <= 1.0; side += 2.0) {
-      float t = 0.5 + 0.5 * side * SUN_GL_X[i];
-      float w_a = w_lo + t * a_len;
-      sum_a += SUN_GL_W[i] * exp(-u * t * a_len) / (1.0 + w_a * w_a);
-      float s = t * len_b, w = w_b * exp(s);
-      sum_b += SUN_GL_W[i] * exp(-u * (a_len + w_b * expm1_nonneg(s))) / (w + 1.0 / w);
+      float s = (0.5 + 0.5 * side * GAUSS12_X[i]) * len_b, w = w_b * exp(s);
+      sum_b += GAUSS12_W[i] * exp(-u * (a_len + w_b * expm1_nonneg(s))) / (w + 1.0 / w);
     }
   return 0.5 * (a_len * sum_a + len_b * sum_b);
 }

@@ -86,8 +86,8 @@ vec3 biri_angular(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float 
     float grow = fast > 0.0 ? log1p_nonneg(BIRI_PANEL_GROWTH / (fast * h * exp(a))) : BIRI_MAX_PANEL;
     float b = min(s1, a + min(BIRI_MAX_PANEL, grow));
     for (int k = 0; k < 8; ++k) {
-      float s = 0.5 * (a + b) + 0.5 * (b - a) * (k < 4 ? -BIRI_GL_X[k] : BIRI_GL_X[k - 4]);
-      float w = 0.5 * (b - a) * BIRI_GL_W[k % 4];
+      float s = 0.5 * (a + b) + 0.5 * (b - a) * (k < 4 ? -GAUSS8_X[k] : GAUSS8_X[k - 4]);
+      float w = 0.5 * (b - a) * GAUSS8_W[k % 4];
       float f = simplified_model() ? INV_4PI : component_phase(m, -tanh(s));
       if (simplified_model()) {  // its falloff over the physical one's, r²/(a1·r² + a0) (Nilsson eq. 2.13)
         float r2 = h * h * cosh(s) * cosh(s);
