@@ -29,7 +29,8 @@ float atan_unit(float t) {
 float atan2_accurate(float y, float x) {
   float ax = abs(x), ay = abs(y);
   if (ax == 0.0 && ay == 0.0) return 0.0;
-  float a = ay <= ax ? atan_unit(ay / ax) : 0.5 * PI - atan_unit(ax / ay);
+  float a = atan_unit(min(ax, ay) / max(ax, ay));  // one quotient and polynomial: llvmpipe runs both sides of a branch
+  if (ay > ax) a = 0.5 * PI - a;
   if (x < 0.0) a = PI - a;
   return y < 0.0 ? -a : a;
 }
@@ -52,5 +53,6 @@ float expm1_nonneg(float x) {
 // sqrt(1 + w²) = 1/cos(atan w) without overflow for w up to the float maximum.
 float sec_of_atan(float w) {
   w = abs(w);
-  return w > 1.0 ? w * sqrt(1.0 + 1.0 / (w * w)) : sqrt(1.0 + w * w);
+  bool big = w > 1.0;  // one square root, its argument and factor by selects
+  return (big ? w : 1.0) * sqrt(1.0 + (big ? 1.0 / (w * w) : w * w));
 }

@@ -51,7 +51,10 @@ float sun_F(float u, float v) {
 // tan ξ at a point whose offset along the ray from the foot of the perpendicular
 // is e, at distance r from the light: (e + r)/r0, written as r0/(r - e) for
 // e < 0 where e + r cancels.
-float sun_tan_xi(float e, float r0, float r) { return e >= 0.0 ? (e + r) / r0 : r0 / (r - e); }
+float sun_tan_xi(float e, float r0, float r) {
+  bool ahead = e >= 0.0;  // one quotient of selected terms: llvmpipe runs both sides of a branch
+  return (ahead ? e + r : r0) / (ahead ? r0 : r - e);
+}
 
 // The segment x in [0, d] with the foot of the perpendicular from the light at
 // x = xs, at distance r0: Kingston eqs. 36-39 with x - xs = r0 tan(2ξ - π/2),
