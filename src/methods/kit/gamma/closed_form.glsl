@@ -115,8 +115,8 @@ vec3 local_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b)
 
 // A hard-edged spot: one local_piece per cone interval. Its own loop, not
 // spot_gamma's: on llvmpipe a lane runs every iteration any lane of its group
-// runs, so the 5 pieces per interval a smooth edge needs cost a hard edge 5
-// closed forms for its 1 (docs/decisions.md, "Γ's cost").
+// runs, so the 5 pieces per interval a smooth edge needs made a hard edge run
+// 4 empty closed forms beside its 1 (docs/decisions.md, "Γ's cost").
 vec3 hard_spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, ConeIntervals lit) {
   vec3 sum = vec3(0.0);
   for (int k = 0; k < lit.count; ++k) {
