@@ -98,8 +98,6 @@ float stable_asinh(float z) {
 
 
 // Biri's angular integral in s = asinh((x - xs)/h) (gamma.cpp): 8-point
-// Gauss–Legendre per panel, panels <= 2 in s and <= 4 in the growth of σt(x + r).
-const float BIRI_GL_X[4] = float[](0.960289856497536, 0.796666477413627, 0.525532409916329, 0.183434642495650);
-const float BIRI_GL_W[4] = float[](0.101228536290376, 0.222381034453374, 0.313706645877887, 0.362683783378362);
+// Gauss–Legendre per panel (GAUSS8), panels <= 2 in s and <= 4 in the growth of σt(x + r).
 const float BIRI_MAX_PANEL = 2.0, BIRI_PANEL_GROWTH = 4.0, BIRI_TAIL_GROWTH = 32.0;
 const int BIRI_MAX_PANELS = 64;  // gamma.cpp max_panels

@@ -41,9 +41,8 @@ struct ConeIntervals {
 // most of their digits; the discriminant, expanded by hand, keeps the roots
 // accurate when they are close (near 90°). No thresholds: a negative
 // discriminant counts as 0 (keeping a double root at the apex), a missing
-// root is s = 0; such spurious roots only add bounds.
-vec2 double_cone_roots(vec3 p, vec3 dir, vec3 axis, float angle) {
-  float sn = sin(angle), cs = cos(angle);
+// root is s = 0; such spurious roots only add bounds. sn, cs: sin α, cos α.
+vec2 double_cone_roots(vec3 p, vec3 dir, vec3 axis, float sn, float cs) {
   float s2 = sn * sn, c2 = cs * cs;
   float pa = dot(p, axis), da = dot(dir, axis);
   vec3 p_perp = p - pa * axis, d_perp = dir - da * axis;
@@ -56,6 +55,12 @@ vec2 double_cone_roots(vec3 p, vec3 dir, vec3 axis, float angle) {
   return vec2(A != 0.0 ? q / A : 0.0, q != 0.0 ? C / q : 0.0);
 }
 
+// Whether the direction v from the apex lies inside the cone of half-angle α
+// (sn, cs = sin α, cos α): |a×v|·cos α − (a·v)·sin α = |v|·sin(angle − α), both
+// angles in [0, π], so it is <= 0 exactly where angle <= α — spot_cone's hard
+// cut without its atan2 (docs/decisions.md, "Γ's cost").
+bool inside_cone(vec3 axis, float sn, float cs, vec3 v) { return length(cross(axis, v)) * cs <= dot(axis, v) * sn; }
+
 ConeIntervals cone_intervals(vec3 apex, vec3 axis, float half_angle, vec3 origin, vec3 dir, float t0, float t1) {
   ConeIntervals lit = ConeIntervals(0, vec2[2](vec2(0.0), vec2(0.0)));
   if (!(t1 > t0)) return lit;
@@ -63,21 +68,22 @@ ConeIntervals cone_intervals(vec3 apex, vec3 axis, float half_angle, vec3 origin
   // scales with the line's distance from the apex, not the origin's.
   vec3 w = origin - apex;
   float foot = -dot(w, dir);
-  vec2 r = clamp(foot + double_cone_roots(w + foot * dir, dir, axis, half_angle), t0, t1);
-  float bounds[4] = float[4](t0, min(r.x, r.y), max(r.x, r.y), t1);
-  // Between consecutive bounds the angle never crosses α (the boundary lies on
-  // the double cone): the midpoint classifies each piece, picking the nappe.
-  // angle_between as in spot_cone, so both agree on what is lit.
-  for (int k = 0; k < 3; ++k) {
-    float a = bounds[k], b = bounds[k + 1];
-    if (!(b > a) || angle_between(axis, w + 0.5 * (a + b) * dir) > half_angle) continue;
-    if (lit.count > 0 && lit.piece[lit.count - 1].y == a) {
-      lit.piece[lit.count - 1].y = b;  // continues the previous piece across a spurious bound
-    } else {
-      lit.piece[lit.count] = vec2(a, b);  // at most lit, dark, lit: two pieces
-      ++lit.count;
-    }
-  }
+  float sn = sin(half_angle), cs = cos(half_angle);
+  vec2 r = clamp(foot + double_cone_roots(w + foot * dir, dir, axis, sn, cs), t0, t1);
+  float lo = min(r.x, r.y), hi = max(r.x, r.y);
+  // Between consecutive bounds t0, lo, hi, t1 the angle never crosses α (the
+  // boundary lies on the double cone): the midpoint classifies each piece,
+  // picking the nappe. Lit pieces of positive length that meet join (across a
+  // spurious bound or an empty piece); two pieces only around a dark middle
+  // one (α > π/2). By selects, not the C++'s loop over the pieces: its writes
+  // at lit.count are a per-lane indexed store on llvmpipe.
+  bool lit0 = t0 < lo && inside_cone(axis, sn, cs, w + 0.5 * (t0 + lo) * dir);
+  bool lit1 = lo < hi && inside_cone(axis, sn, cs, w + 0.5 * (lo + hi) * dir);
+  bool lit2 = hi < t1 && inside_cone(axis, sn, cs, w + 0.5 * (hi + t1) * dir);
+  bool gap = lit0 && lit2 && lo < hi && !lit1;
+  lit.count = gap ? 2 : (lit0 || lit1 || lit2 ? 1 : 0);
+  if (lit.count > 0) lit.piece[0] = vec2(lit0 ? t0 : (lit1 ? lo : hi), gap ? lo : (lit2 ? t1 : (lit1 ? hi : lo)));
+  if (gap) lit.piece[1] = vec2(hi, t1);
   return lit;
 }
 

@@ -1,6 +1,14 @@
 // Numerical helpers shared by the optics twins.
 #include "optics/constants.glsl"
 
+// Gauss–Legendre on [-1, 1], 8 and 12 points: the positive abscissae and their weights.
+const float GAUSS8_X[4] = float[](0.960289856497536, 0.796666477413627, 0.525532409916329, 0.183434642495650);
+const float GAUSS8_W[4] = float[](0.101228536290376, 0.222381034453374, 0.313706645877887, 0.362683783378362);
+const float GAUSS12_X[6] = float[](0.981560634247, 0.904117256370, 0.769902674194,
+                                   0.587317954287, 0.367831498998, 0.125233408511);
+const float GAUSS12_W[6] = float[](0.047175336387, 0.106939325995, 0.160078328543,
+                                   0.203167426723, 0.233492536538, 0.249147045813);
+
 // atan(t) for t in [0, 1] to ~2 ulp (Cephes atanf: reduction at tan(π/8),
 // odd minimax polynomial, peak relative error 1.9e-7). GLSL's atan may be off
 // by 4096 ulp (Mesa's llvmpipe is off by hundreds), which shifts a spot's smooth
@@ -21,7 +29,8 @@ float atan_unit(float t) {
 float atan2_accurate(float y, float x) {
   float ax = abs(x), ay = abs(y);
   if (ax == 0.0 && ay == 0.0) return 0.0;
-  float a = ay <= ax ? atan_unit(ay / ax) : 0.5 * PI - atan_unit(ax / ay);
+  float a = atan_unit(min(ax, ay) / max(ax, ay));  // one quotient and polynomial: llvmpipe runs both sides of a branch
+  if (ay > ax) a = 0.5 * PI - a;
   if (x < 0.0) a = PI - a;
   return y < 0.0 ? -a : a;
 }
@@ -44,5 +53,6 @@ float expm1_nonneg(float x) {
 // sqrt(1 + w²) = 1/cos(atan w) without overflow for w up to the float maximum.
 float sec_of_atan(float w) {
   w = abs(w);
-  return w > 1.0 ? w * sqrt(1.0 + 1.0 / (w * w)) : sqrt(1.0 + w * w);
+  bool big = w > 1.0;  // one square root, its argument and factor by selects
+  return (big ? w : 1.0) * sqrt(1.0 + (big ? 1.0 / (w * w) : w * w));
 }

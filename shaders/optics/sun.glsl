@@ -6,12 +6,6 @@
 #include "optics/numerics.glsl"
 #include "optics/light.glsl"
 
-// 12-point Gauss–Legendre on [-1, 1]: the positive abscissae and their weights.
-const float SUN_GL_X[6] = float[](0.981560634247, 0.904117256370, 0.769902674194,
-                                  0.587317954287, 0.367831498998, 0.125233408511);
-const float SUN_GL_W[6] = float[](0.047175336387, 0.106939325995, 0.160078328543,
-                                  0.203167426723, 0.233492536538, 0.249147045813);
-
 // Beyond u·(tan ξ - tan ξ_lo) = 16 the integrand is below e^-16 of its start:
 // the dropped tail is below e^(1-16) ≈ 3e-7 of the integral (it is bounded by
 // e^-16/(u sec² ξ_cut) and the first e-fold holds at least e^-1/(u sec² ξ_cut)).
@@ -19,33 +13,32 @@ const float SUN_CUTOFF = 16.0;
 
 // J = ∫_{ξlo}^{ξlo+dxi} exp(-u (tan ξ - w_lo)) dξ with w_lo = tan ξlo >= 0,
 // dw = tan(ξlo + dxi) - w_lo >= 0 (+∞ allowed), dxi <= π/2 - ξlo; u >= 0.
-// Plain Gauss–Legendre in ξ converges only as 1/N² when the range nears π/2
-// (exp(-u/η), η = π/2 - ξ, has structure at every scale from u to 1), so the
-// range is split where tan ξ = 1:
-//   A: ξ up to tan ξ = 1, in ξ, with tan ξ - w_lo = tan δ (1 + w_lo²)/(1 - w_lo tan δ)
-//      (δ = ξ - ξlo: no cancellation);
-//   B: beyond, in s = ln(tan ξ / w_b): dξ = ds/(w + 1/w), whose poles stay π/2
-//      off the real axis at every scale, and exp(-u(w - w_lo)) is entire.
-// 12 nodes on each part (one loop); its error is measured in docs/decisions.md
-// (Numerics) and on the GPU by the twin test.
+// In w = tan ξ it is ∫ exp(-u (w - w_lo)) dw/(1 + w²). Plain Gauss–Legendre
+// in ξ converges only as 1/N² when the range nears π/2 (exp(-u/η), η = π/2 - ξ,
+// has structure at every scale from u to 1), so the range is split where w = 1:
+//   A: up to w = 1, in w itself: 1/(1 + w²) has its poles ±i far from [0, 1];
+//   B: beyond, in s = ln(w / w_b): dw/(1 + w²) = ds/(w + 1/w), whose poles stay
+//      π/2 off the real axis at every scale, and exp(-u(w - w_lo)) is entire.
+// 8 nodes on A, 12 on B, whose range in s reaches ln(16/u); their error is
+// measured in docs/decisions.md (Numerics, "Γ's cost") and on the GPU by the twin test.
 float sun_angular(float u, float w_lo, float dw, float dxi) {
   if (!(u > 1e-20)) return dxi;  // J = dxi - O(u·ln(1/u))
   float dw_cut = min(dw, SUN_CUTOFF / u);
-  float a_len = w_lo < 1.0 ? min(dw_cut, 1.0 - w_lo) : 0.0;  // part A's range in tan ξ
-  float len_a = a_len == dw ? dxi : atan2_accurate(a_len, 1.0 + w_lo * (w_lo + a_len));
+  float a_len = w_lo < 1.0 ? min(dw_cut, 1.0 - w_lo) : 0.0;  // part A's range in w
   float w_b = max(w_lo + a_len, 1.0);                        // part B starts here
   float len_b = dw_cut > a_len ? log1p_nonneg((dw_cut - a_len) / w_b) : 0.0;
-  float k = 1.0 + w_lo * w_lo;
   float sum_a = 0.0, sum_b = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (float side = -1.0; side <= 1.0; side += 2.0) {
+      float t = 0.5 + 0.5 * side * GAUSS8_X[i], w = w_lo + t * a_len;
+      sum_a += GAUSS8_W[i] * exp(-u * t * a_len) / (1.0 + w * w);
+    }
   for (int i = 0; i < 6; ++i)
     for (float side = -1.0; side <= 1.0; side += 2.0) {
-      float t = 0.5 + 0.5 * side * SUN_GL_X[i];
-      float tan_d = tan(t * len_a);
-      sum_a += SUN_GL_W[i] * exp(-u * tan_d * k / (1.0 - w_lo * tan_d));
-      float s = t * len_b, w = w_b * exp(s);
-      sum_b += SUN_GL_W[i] * exp(-u * (a_len + w_b * expm1_nonneg(s))) / (w + 1.0 / w);
+      float s = (0.5 + 0.5 * side * GAUSS12_X[i]) * len_b, w = w_b * exp(s);
+      sum_b += GAUSS12_W[i] * exp(-u * (a_len + w_b * expm1_nonneg(s))) / (w + 1.0 / w);
     }
-  return 0.5 * (len_a * sum_a + len_b * sum_b);
+  return 0.5 * (a_len * sum_a + len_b * sum_b);
 }
 
 // Sun et al.'s F(u, v) = ∫_0^v exp(-u tan ξ) dξ (Kingston eq. 40), u >= 0,
@@ -58,7 +51,10 @@ float sun_F(float u, float v) {
 // tan ξ at a point whose offset along the ray from the foot of the perpendicular
 // is e, at distance r from the light: (e + r)/r0, written as r0/(r - e) for
 // e < 0 where e + r cancels.
-float sun_tan_xi(float e, float r0, float r) { return e >= 0.0 ? (e + r) / r0 : r0 / (r - e); }
+float sun_tan_xi(float e, float r0, float r) {
+  bool ahead = e >= 0.0;  // one quotient of selected terms: llvmpipe runs both sides of a branch
+  return (ahead ? e + r : r0) / (ahead ? r0 : r - e);
+}
 
 // The segment x in [0, d] with the foot of the perpendicular from the light at
 // x = xs, at distance r0: Kingston eqs. 36-39 with x - xs = r0 tan(2ξ - π/2),

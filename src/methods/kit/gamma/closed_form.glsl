@@ -86,8 +86,8 @@ vec3 biri_angular(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float 
     float grow = fast > 0.0 ? log1p_nonneg(BIRI_PANEL_GROWTH / (fast * h * exp(a))) : BIRI_MAX_PANEL;
     float b = min(s1, a + min(BIRI_MAX_PANEL, grow));
     for (int k = 0; k < 8; ++k) {
-      float s = 0.5 * (a + b) + 0.5 * (b - a) * (k < 4 ? -BIRI_GL_X[k] : BIRI_GL_X[k - 4]);
-      float w = 0.5 * (b - a) * BIRI_GL_W[k % 4];
+      float s = 0.5 * (a + b) + 0.5 * (b - a) * (k < 4 ? -GAUSS8_X[k] : GAUSS8_X[k - 4]);
+      float w = 0.5 * (b - a) * GAUSS8_W[k % 4];
       float f = simplified_model() ? INV_4PI : component_phase(m, -tanh(s));
       if (simplified_model()) {  // its falloff over the physical one's, r²/(a1·r² + a0) (Nilsson eq. 2.13)
         float r2 = h * h * cosh(s) * cosh(s);
@@ -113,6 +113,19 @@ vec3 local_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b)
   return m.sigma_s * LIGHT(i).color * biri_angular(i, m, eye, dir, a, b);
 }
 
+// A hard-edged spot: one local_piece per cone interval. Its own loop, not
+// spot_gamma's: on llvmpipe a lane runs every iteration any lane of its group
+// runs, so the 5 pieces per interval a smooth edge needs made a hard edge run
+// 4 empty closed forms beside its 1 (docs/decisions.md, "Γ's cost").
+vec3 hard_spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, ConeIntervals lit) {
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < lit.count; ++k) {
+    vec2 piece = k == 0 ? lit.piece[0] : lit.piece[1];  // by a select: indexed by k, Mesa would unroll the loop
+    sum += local_piece(i, m, eye, dir, piece.x, piece.y);
+  }
+  return sum;
+}
+
 // A spot: its cone_intervals (hard cut at the cone), each cut again at the
 // inner cone's ends under a smooth edge (gamma.cpp spot_gamma): those pieces
 // lie inside the outer one, in ascending order. Their ends are gathered first
@@ -124,8 +137,9 @@ vec3 local_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b)
 vec3 spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1) {
   vec3 apex = LIGHT(i).position, axis = LIGHT(i).direction;
   float cone = LIGHT(i).cone, inner = cone - LIGHT(i).edge;
-  bool cut = light_edges[i] && inner > 0.0;
   ConeIntervals lit = cone_intervals(apex, axis, cone, eye, dir, t0, t1);
+  if (!light_edges[i]) return hard_spot_gamma(i, m, eye, dir, lit);  // a constant: folds away
+  bool cut = inner > 0.0;
   float ends[12];
   for (int k = 0; k < 2; ++k) {
     float start = lit.piece[k].x, end = lit.piece[k].y;

@@ -208,6 +208,19 @@ TEST(GammaTwin, NilssonSimplified) {
   check_scene("Γ simplified", gamma_scene(Phase{}, LightModelType::simplified), 1e-3, 1e-3);
 }
 
+// A hard-edged spot wider than a half-space: a line may cross the dark backward
+// cone between two lit pieces, each its own closed form (closed_form.glsl
+// hard_spot_gamma), in the Sun path and Biri's.
+TEST(GammaTwin, WideHardSpotInBothPaths) {
+  for (const Phase& phase : {Phase{}, hg_murky()}) {
+    Scene s = gamma_scene(phase, LightModelType::physical);
+    Light wide = s.lights[2];
+    wide.edge_deg = 0.0f;
+    s.lights = {wide};
+    check_scene("Γ wide hard spot", s, 1e-3, 5e-3);
+  }
+}
+
 TEST(GammaTwin, ComponentsOfBoundedMedia) {
   check_components("Γ components", bounded_scene(LightModelType::physical), 1e-3, 5e-3);
 }
