@@ -62,18 +62,25 @@ float inside(vec4 p, int k) {
 }
 
 // The triangle's part in the widened frustum, in pixels from the image's centre: n corners,
-// fewer than 3 where it lies outside.
+// fewer than 3 where it lies outside. Each corner and its side of a plane are carried to the
+// next edge rather than read again: an array read at a data index is a gather per lane on
+// llvmpipe, and reading each corner twice made this fallback most of the program's compile
+// (docs/decisions.md "The first frame (issue 28)").
 int visible_part(vec4 clip[3], out vec2 part[MAX_PART]) {
   vec4 polygon[MAX_PART], clipped[MAX_PART];
   for (int i = 0; i < 3; ++i) polygon[i] = clip[i];
   int n = 3;
   for (int k = 0; k < 4; ++k) {
     int m = 0;
+    vec4 first = polygon[0], p = first;
+    float d_first = inside(first, k), dp = d_first;
     for (int i = 0; i < n; ++i) {
-      vec4 p = polygon[i], q = polygon[(i + 1) % n];
-      float dp = inside(p, k), dq = inside(q, k);
+      vec4 q = i + 1 < n ? polygon[i + 1] : first;
+      float dq = i + 1 < n ? inside(q, k) : d_first;
       if (dp >= 0.0) clipped[m++] = p;
       if ((dp >= 0.0) != (dq >= 0.0)) clipped[m++] = mix(p, q, dp / (dp - dq));
+      p = q;
+      dp = dq;
     }
     polygon = clipped;
     n = m;
@@ -83,22 +90,30 @@ int visible_part(vec4 clip[3], out vec2 part[MAX_PART]) {
 }
 
 // Corner k of the triangle around polygon part[0 … n), grown by the margin: twice the
-// rectangle around it along its longest edge.
+// rectangle around it along its longest edge (the longest kept, not read again).
 vec2 enclosing_corner(vec2 part[MAX_PART], int n, int k) {
-  int e = 0;
-  for (int i = 1; i < n; ++i)
-    if (distance(part[(i + 1) % n], part[i]) > distance(part[(e + 1) % n], part[e])) e = i;
-  vec2 along = normalize(part[(e + 1) % n] - part[e]), across = vec2(-along.y, along.x);
+  vec2 start = part[0], end = part[1];
+  float longest = distance(end, start);
+  for (int i = 1; i < n; ++i) {
+    vec2 next = i + 1 < n ? part[i + 1] : part[0];
+    float length_i = distance(next, part[i]);
+    if (length_i > longest) {
+      start = part[i];
+      end = next;
+      longest = length_i;
+    }
+  }
+  vec2 along = normalize(end - start), across = vec2(-along.y, along.x);
   vec2 lo = vec2(0.0), hi = vec2(0.0);
   for (int i = 0; i < n; ++i) {
-    vec2 p = vec2(dot(part[i] - part[e], along), dot(part[i] - part[e], across));
+    vec2 p = vec2(dot(part[i] - start, along), dot(part[i] - start, across));
     lo = min(lo, p);
     hi = max(hi, p);
   }
   lo -= COVER_MARGIN;
   hi += COVER_MARGIN;
   vec2 corner = lo + vec2(k == 1 ? 2.0 : 0.0, k == 2 ? 2.0 : 0.0) * (hi - lo);
-  return part[e] + corner.x * along + corner.y * across;
+  return start + corner.x * along + corner.y * across;
 }
 
 void main() {

@@ -305,10 +305,11 @@ void write_triangle(uint index, vec3 a, vec3 b, vec3 c) {
   records[w + 4u] = uvec4(uint(light_index), 1u, 0u, 0u);
 }
 
-// Oriented: (a, b, c) for o > 0, (a, c, b) otherwise.
+// Oriented: (a, b, c) for o > 0, (a, c, b) otherwise. One write_triangle with
+// its corners chosen, not one per branch: GLSL inlines each call, and each copy
+// is compiled (docs/decisions.md "The first frame (issue 28)").
 void write_oriented(uint index, float o, vec3 a, vec3 b, vec3 c) {
-  if (o > 0.0) write_triangle(index, a, b, c);
-  else write_triangle(index, a, c, b);
+  write_triangle(index, a, o > 0.0 ? b : c, o > 0.0 ? c : b);
 }
 
 #if DEPTH_MODE == DEPTH_TEXEL
