@@ -180,7 +180,7 @@ vec2 step_sample(Segment s, float u, int n) {
   // dy per unit of u·n; the floor keeps a share that underflowed finite (its integrand is as small)
   float step = mass / (float(n) * max(density * exp(-k * y), 1e-30 * mass));
   if (s.h == 0.0) return vec2(start + y, step);
-  float z = s.h * tan_half_turn(start + y);
+  float z = s.h * tan(start + y);
   return vec2(s.foot + z, step * (s.h + z * z / s.h));  // dx = h/cos²θ·dθ
 }
 
@@ -306,7 +306,7 @@ vec3 guide_piece(int i, Segment s, vec3 dir, vec3 x, float start, vec3 depth, ve
   vec3 sum = vec3(0.0);
   for (int n = 0; n < 4; ++n) {
     float u = mix(u_a, u_b, 0.5 * (node[n] + 1.0));
-    float t = s.foot + s.h * tan_half_turn(u);
+    float t = s.foot + s.h * tan(u);
     vec3 at = frame.eye + t * dir;
     sum += weight[n] * scattering(x, -sin(u)) * exp(-depth - sigma_t * (t - start) - light_leg_depth(i, at));
   }

@@ -28,25 +28,9 @@ Segment equiangular_segment(float a, float b, vec3 eye, vec3 dir, vec3 light) {
   return Segment(a, b, foot, h, atan2_accurate(a - foot, h), atan2_accurate(b - foot, h));
 }
 
-// tan(x) for |x| < π/2 to ~2 ulp (Cephes tanf: past π/4, −1/tan of x − π/2
-// split in three parts, one odd minimax polynomial). GLSL's tan is
-// sin/cos, each range-reduced on llvmpipe: a fifth of raymarch's time at 8
-// steps went to it (docs/decisions.md "Per-pixel setup (issue 28)").
-float tan_half_turn(float x) {
-  float a = abs(x);
-  bool far = a > 0.78539816;  // π/4
-  float k = far ? 2.0 : 0.0;
-  float z = ((a - k * 0.78515625) - k * 2.4187564849853515625e-4) - k * 3.77489497744594108e-8;
-  float zz = z * z;
-  float p = (((((9.38540185543e-3 * zz + 3.11992232697e-3) * zz + 2.44301354525e-2) * zz + 5.34112807005e-2) * zz
-              + 1.33387994085e-1) * zz + 3.33331568548e-1) * zz * z + z;
-  float t = far ? -1.0 / p : p;
-  return x < 0.0 ? -t : t;
-}
-
 // Distance along the ray (x) and weight (y) of the sample at u ∈ (0, 1) of n.
 vec2 segment_sample(Segment s, float u, int n) {
   if (s.h == 0.0) return vec2(mix(s.a, s.b, u), (s.b - s.a) / float(n));
-  float y = s.h * tan_half_turn(mix(s.theta_a, s.theta_b, u));
+  float y = s.h * tan(mix(s.theta_a, s.theta_b, u));
   return vec2(s.foot + y, (s.theta_b - s.theta_a) / float(n) * (s.h + y * y / s.h));  // h/cos²θ = h + y²/h
 }
