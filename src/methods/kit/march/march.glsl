@@ -124,12 +124,9 @@ float decayed_inverse(float k, float f) {
 }
 
 // The pieces of segment s (a march's interval) and their shares: equiangular
-// weighted by σ̄ only where volumes make σ̄ vary. `even` (s is a uniform
-// segment) is a constant at every call, so that without volumes an
-// equiangular march compiles neither this nor step_sample's weighted path:
-// llvmpipe runs both sides of a branch on data (docs/design.md §2), and
-// `s.h == 0.0` is data.
-void weigh_pieces(vec3 dir, Segment s, bool even) {
+// weighted by σ̄ only where volumes make σ̄ vary.
+void weigh_pieces(vec3 dir, Segment s) {
+  bool even = s.h == 0.0;
   weighted = SAMPLING != SAMPLING_UNIFORM && (even || VOLUME_COUNT > 0);
   if (!weighted) return;
   piece_start[0] = even ? s.a : s.theta_a;
@@ -225,7 +222,7 @@ Segment light_steps(int i, vec3 dir, vec2 lit) {
   bool even = SAMPLING == SAMPLING_UNIFORM || has_beam(i) || light_types[i] == LIGHT_DIRECTIONAL;
   Segment s = even ? uniform_segment(lit.x, lit.y)
                    : equiangular_segment(lit.x, lit.y, frame.eye, dir, LIGHT(i).position);
-  weigh_pieces(dir, s, even);
+  weigh_pieces(dir, s);
   return s;
 }
 
@@ -256,7 +253,7 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset) {
   vec3 sum = vec3(0.0);
   if (any_unbounded_sun()) {
     Segment suns = uniform_segment(0.0, d);
-    weigh_pieces(dir, suns, true);
+    weigh_pieces(dir, suns);
     sum += march_segment(dir, suns, r, offset, UNBOUNDED_SUNS);
   }
 #define ADD_LIGHT_MARCH(i) sum += march_light(i, dir, d, r, offset);
