@@ -15,12 +15,13 @@ layout(std430, binding = BINDING_TILES) buffer FrameTiles {
 // A flag per 8×8 tile of the frame, cleared before the tiles are listed.
 layout(std430, binding = BINDING_TILE_FLAGS) buffer TileFlags { uint tile_flag[]; };
 
-// Lists this invocation's tile, once however many of its invocations call it
-// (atomics, not a barrier: llvmpipe runs a barrier's two halves as coroutines,
-// which costs a pass several times over).
-void list_tile() {
-  uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  if (atomicOr(tile_flag[index], 1u) == 0u) tile_corner[atomicAdd(tile_groups.w, 1u)] = gl_WorkGroupID.xy * 8u;
+// Lists the tile of `pixel` in a frame `width` pixels wide, once however
+// many of its pixels call it (atomics, not a barrier: llvmpipe runs a
+// barrier's two halves as coroutines, which costs a pass several times over).
+void list_tile(ivec2 pixel, int width) {
+  uvec2 tile = uvec2(pixel) / 8u;
+  uint index = tile.y * uint((width + 7) / 8) + tile.x;
+  if (atomicOr(tile_flag[index], 1u) == 0u) tile_corner[atomicAdd(tile_groups.w, 1u)] = tile * 8u;
 }
 #endif
 

@@ -32,8 +32,8 @@ std::vector<SettingSpec> per_pixel_settings(std::vector<SettingSpec> own) {
 namespace {
 
 // ReducedResolution's textures: the coarse grid's airlight (16 bytes) and
-// distance (4); with bilateral upsampling the full grid's failed mask (1),
-// its distance (4) and recomputed airlight (16), and its tiles' list and
+// distance (4); with bilateral upsampling the full grid's failed pixels'
+// distance (4), the recomputation's (4) and its airlight (16), and its tiles' list and
 // flags (12 bytes a tile of 8×8 and a header of 16).
 std::vector<MemoryNeed> resolution_needs(const Settings& settings, int width, int height) {
   const ResolutionSettings r = ResolutionSettings::from(settings);
@@ -42,7 +42,7 @@ std::vector<MemoryNeed> resolution_needs(const Settings& settings, int width, in
   const double full = double(width) * height, tiles = std::ceil(width / 8.0) * std::ceil(height / 8.0);
   return {{"scale", "the coarse grid's airlight and distance", 20.0 * coarse, 0.0, 16.0 * coarse},
           {"upsample", "the recomputed pixels' mask, distance and airlight on the full grid",
-           r.bilateral ? 21.0 * full + 12.0 * tiles + 16.0 : 0.0, 0.0, r.bilateral ? 16.0 * full : 0.0}};
+           r.bilateral ? 24.0 * full + 12.0 * tiles + 16.0 : 0.0, 0.0, r.bilateral ? 16.0 * full : 0.0}};
 }
 
 }  // namespace

@@ -86,7 +86,7 @@ void ReducedResolution::allocate(const SceneFrame& frame) {
   coarse_distance_ = make_texture(GL_TEXTURE_2D, GL_R32F, coarse_width_, coarse_height_);
   coarse_airlight_ = make_texture(GL_TEXTURE_2D, GL_RGBA32F, coarse_width_, coarse_height_);
   if (!settings_.bilateral) return;
-  failed_ = make_texture(GL_TEXTURE_2D, GL_R8UI, width, height);
+  failed_ = make_texture(GL_TEXTURE_2D, GL_R32F, width, height);
   recompute_distance_ = make_texture(GL_TEXTURE_2D, GL_R32F, width, height);
   recomputed_ = make_texture(GL_TEXTURE_2D, GL_RGBA32F, width, height);
   if (!counter_) counter_ = make_buffer(sizeof(GLuint), nullptr);
@@ -116,8 +116,8 @@ bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, int h
   glBindTextureUnit(first_texture, coarse_airlight_.id());
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   if (!settings_.bilateral) {
-    glUseProgram(program("upsample", "").id());
-    dispatch_pixels(width_, height_);
+    glUseProgram(program("upsample", define("DIVISOR", settings_.divisor)).id());
+    dispatch_pixels(coarse_width_, coarse_height_);
     return false;
   }
   const GLuint zero = 0, no_tiles[4] = {0, 0, 0, 0};
@@ -126,17 +126,17 @@ bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, int h
   glClearNamedBufferData(tile_flags_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::tiles, tiles_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tile_flags_binding, tile_flags_.id());
-  const Program& upsample = program("upsample", "#define BILATERAL\n" + define("HALO", halo));
+  const Program& upsample =
+      program("upsample", "#define BILATERAL\n" + define("HALO", halo) + define("DIVISOR", settings_.divisor));
   glUseProgram(upsample.id());
   set_uniform(upsample, "light_images", upload_light_images(frame));
   set_uniform(upsample, "near_light", near_light_coarse_pixels * settings_.divisor);
-  glBindImageTexture(1, failed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+  glBindImageTexture(1, failed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, counter_binding, counter_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, light_images_binding, light_images_.id());
-  glBindImageTexture(2, recompute_distance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-  dispatch_pixels(width_, height_);
+  dispatch_pixels(coarse_width_, coarse_height_);  // DIVISOR² pixels an invocation
   list_tiles(halo);
-  frame.use_grid(recompute_distance_, width_, height_, &tiles_);
+  frame.use_grid(halo > 0 ? recompute_distance_ : failed_, width_, height_, &tiles_);
   frame.bind();
   return true;
 }

@@ -8,7 +8,7 @@
 // point or spot light's image, where L_air changes by large factors from
 // pixel to pixel. Such a pixel is marked, counted, and recomputed on the full
 // grid (the value written here is the bilinear one, until then). With HALO 0
-// this pass also writes the recomputation's grid: its distance and its tiles.
+// this pass also lists the recomputation's tiles.
 #include "methods/kit/frame/tiles.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;  // gpu::pixel_workgroup
@@ -16,10 +16,8 @@ layout(binding = BINDING_DISTANCE) uniform sampler2D gbuffer_distance;
 layout(binding = BINDING_FIRST_FREE_TEXTURE) uniform sampler2D coarse;  // rgb L_air, a the coarse distance (stamp)
 layout(rgba32f, binding = 0) uniform writeonly image2D airlight_out;
 #ifdef BILATERAL
-layout(r8ui, binding = 1) uniform writeonly uimage2D failed_out;
-#if HALO == 0
-layout(r32f, binding = 2) uniform writeonly image2D grid_distance;
-#endif
+// The failed pixels' distance, −1 elsewhere: with HALO 0 the recomputation's grid itself.
+layout(r32f, binding = 1) uniform writeonly image2D failed_out;
 layout(std430, binding = BINDING_RECOMPUTED) buffer Recomputed { uint recomputed; };
 layout(std430, binding = BINDING_LIGHT_IMAGES) readonly buffer LightImages { vec2 light_image[]; };
 uniform int light_images;  // point and spot lights in front of the camera, in window coordinates
@@ -44,7 +42,7 @@ struct Upsampled {
   bool failed;
 };
 
-Upsampled upsample(ivec2 pixel, ivec2 size, float d) {
+Upsampled upsample(ivec2 pixel, ivec2 size, float d, bool near_light_image) {
   ivec2 coarse_size = textureSize(coarse, 0);
   // The pixel's centre on the coarse grid, whose pixel centres sit at integers.
   vec2 at = (vec2(pixel) + 0.5) * vec2(coarse_size) / vec2(size) - 0.5;
@@ -75,27 +73,45 @@ Upsampled upsample(ivec2 pixel, ivec2 size, float d) {
     weight += w;
   }
 #ifdef BILATERAL
-  bool failed = !(best >= MIN_WEIGHT) || any(lessThan(least, (1.0 - CONTRAST) * greatest));
-  for (int i = 0; i < light_images; ++i)  // Chebyshev distance: the square the interleaved guard uses too
-    failed = failed || all(lessThanEqual(abs(light_image[i] - (vec2(pixel) + 0.5)), vec2(near_light)));
+  bool failed = near_light_image || !(best >= MIN_WEIGHT) || any(lessThan(least, (1.0 - CONTRAST) * greatest));
   return Upsampled(failed ? plain : sum / weight, failed);
 #else
   return Upsampled(plain, false);
 #endif
 }
 
-void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy), size = textureSize(gbuffer_distance, 0);
-  if (any(greaterThanEqual(pixel, size))) return;
+void upsample_pixel(ivec2 pixel, ivec2 size, bool near_light_image) {
   float d = texelFetch(gbuffer_distance, pixel, 0).r;
-  Upsampled u = upsample(pixel, size, d);
+  Upsampled u = upsample(pixel, size, d, near_light_image);
   imageStore(airlight_out, pixel, vec4(u.value, 1.0));
 #ifdef BILATERAL
-  imageStore(failed_out, pixel, uvec4(u.failed ? 1u : 0u));
+  imageStore(failed_out, pixel, vec4(u.failed ? d : -1.0));
 #if HALO == 0
-  imageStore(grid_distance, pixel, vec4(u.failed ? d : -1.0));
-  if (u.failed) list_tile();
+  if (u.failed) list_tile(pixel, size.x);
 #endif
   if (u.failed) atomicAdd(recomputed, 1u);
 #endif
+}
+
+// DIVISOR × DIVISOR pixels an invocation, a coarse pixel's worth: on
+// llvmpipe an invocation's own cost is a good part of a pass this short.
+// Whether a light's image lies within `near_light` pixels (Chebyshev, the
+// square the interleaved guard uses too) of the block from `first`: every
+// pixel of the block is then recomputed.
+bool near_light_image(ivec2 first) {
+  bool near = false;
+#ifdef BILATERAL
+  vec2 centre = vec2(first) + 0.5 * float(DIVISOR);
+  for (int i = 0; i < light_images; ++i)
+    near = near || all(lessThanEqual(abs(light_image[i] - centre), vec2(near_light + 0.5 * float(DIVISOR))));
+#endif
+  return near;
+}
+
+void main() {
+  ivec2 size = textureSize(gbuffer_distance, 0), first = ivec2(gl_GlobalInvocationID.xy) * DIVISOR;
+  bool near = near_light_image(first);
+  for (int y = 0; y < DIVISOR; ++y)
+    for (int x = 0; x < DIVISOR; ++x)
+      if (all(lessThan(first + ivec2(x, y), size))) upsample_pixel(first + ivec2(x, y), size, near);
 }
