@@ -105,6 +105,11 @@ void ReducedResolution::reduce(SceneFrame& frame, PassTimer& timer) {
   frame.bind();
 }
 
+std::string ReducedResolution::upsample_defines() const {
+  const bool exact = width_ % settings_.divisor == 0 && height_ % settings_.divisor == 0;
+  return define("DIVISOR", settings_.divisor) + (exact ? "#define EXACT\n" : "");
+}
+
 bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, int halo, PassTimer& timer) {
   ScopedPass pass(timer, "upsample");
   frame.use_gbuffer_grid();
@@ -116,8 +121,8 @@ bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, int h
   glBindTextureUnit(first_texture, coarse_airlight_.id());
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   if (!settings_.bilateral) {
-    glUseProgram(program("upsample", define("DIVISOR", settings_.divisor)).id());
-    dispatch_pixels(coarse_width_, coarse_height_);
+    glUseProgram(program("upsample", upsample_defines()).id());
+    dispatch_pixels((width_ + 1) / 2, (height_ + 1) / 2);  // 2×2 pixels an invocation
     return false;
   }
   const GLuint zero = 0, no_tiles[4] = {0, 0, 0, 0};
@@ -126,15 +131,14 @@ bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, int h
   glClearNamedBufferData(tile_flags_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::tiles, tiles_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tile_flags_binding, tile_flags_.id());
-  const Program& upsample =
-      program("upsample", "#define BILATERAL\n" + define("HALO", halo) + define("DIVISOR", settings_.divisor));
+  const Program& upsample = program("upsample", "#define BILATERAL\n" + define("HALO", halo) + upsample_defines());
   glUseProgram(upsample.id());
   set_uniform(upsample, "light_images", upload_light_images(frame));
   set_uniform(upsample, "near_light", near_light_coarse_pixels * settings_.divisor);
   glBindImageTexture(1, failed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, counter_binding, counter_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, light_images_binding, light_images_.id());
-  dispatch_pixels(coarse_width_, coarse_height_);  // DIVISOR² pixels an invocation
+  dispatch_pixels((width_ + 1) / 2, (height_ + 1) / 2);  // 2×2 pixels an invocation
   list_tiles(halo);
   frame.use_grid(halo > 0 ? recompute_distance_ : failed_, width_, height_, &tiles_);
   frame.bind();

@@ -16,6 +16,7 @@
 #include <glm/vec2.hpp>
 
 #include <airlight/settings.hpp>
+#include <string>
 #include <vector>
 
 namespace airlight::kit {
@@ -59,6 +60,7 @@ private:
   void allocate(const SceneFrame& frame);
   int upload_light_images(const SceneFrame& frame);
   void list_tiles(int halo);
+  std::string upsample_defines() const;
 
   ResolutionSettings settings_;
   int width_ = 0, height_ = 0, coarse_width_ = 0, coarse_height_ = 0;

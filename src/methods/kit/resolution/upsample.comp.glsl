@@ -42,20 +42,22 @@ struct Upsampled {
   bool failed;
 };
 
-Upsampled upsample(ivec2 pixel, ivec2 size, float d, bool near_light_image) {
-  ivec2 coarse_size = textureSize(coarse, 0);
-  // The pixel's centre on the coarse grid, whose pixel centres sit at integers.
-  vec2 at = (vec2(pixel) + 0.5) * vec2(coarse_size) / vec2(size) - 0.5;
-  ivec2 base = ivec2(floor(at));
-  vec2 f = at - vec2(base);
+// The pixel's four coarse neighbours, t[j][i] at (base + (i, j)) with base
+// the nearest coarse centre below and left of it, and its fraction `f` of the
+// way from base to base + (1, 1).
+struct Taps {
+  vec4 t00, t10, t01, t11;
+  vec2 f;
+};
+
+Upsampled upsample(Taps taps, float d, bool near_light_image) {
   vec3 sum = vec3(0.0), plain = vec3(0.0);
   float weight = 0.0, best = 0.0;
   vec3 least = vec3(uintBitsToFloat(0x7f800000u)), greatest = vec3(0.0);
   for (int k = 0; k < 4; ++k) {
-    ivec2 o = ivec2(k & 1, k >> 1);
-    ivec2 q = clamp(base + o, ivec2(0), coarse_size - 1);
-    vec2 axis = mix(vec2(1.0) - f, f, vec2(o));
-    vec4 tap = texelFetch(coarse, q, 0);  // one fetch a tap: a texel fetch is most of this pass's cost on llvmpipe
+    vec2 o = vec2(k & 1, k >> 1);
+    vec2 axis = mix(vec2(1.0) - taps.f, taps.f, o);
+    vec4 tap = k == 0 ? taps.t00 : k == 1 ? taps.t10 : k == 2 ? taps.t01 : taps.t11;
     vec3 value = tap.rgb;
     float w = axis.x * axis.y;
     plain += w * value;
@@ -80,9 +82,21 @@ Upsampled upsample(ivec2 pixel, ivec2 size, float d, bool near_light_image) {
 #endif
 }
 
-void upsample_pixel(ivec2 pixel, ivec2 size, bool near_light_image) {
+// The taps of `pixel` fetched: any sizes.
+Taps fetched_taps(ivec2 pixel, ivec2 size) {
+  ivec2 coarse_size = textureSize(coarse, 0);
+  // The pixel's centre on the coarse grid, whose pixel centres sit at integers.
+  vec2 at = (vec2(pixel) + 0.5) * vec2(coarse_size) / vec2(size) - 0.5;
+  ivec2 base = ivec2(floor(at));
+  ivec2 hi = coarse_size - 1;
+  return Taps(texelFetch(coarse, clamp(base, ivec2(0), hi), 0), texelFetch(coarse, clamp(base + ivec2(1, 0), ivec2(0), hi), 0),
+              texelFetch(coarse, clamp(base + ivec2(0, 1), ivec2(0), hi), 0), texelFetch(coarse, clamp(base + 1, ivec2(0), hi), 0),
+              at - vec2(base));
+}
+
+void upsample_pixel(ivec2 pixel, ivec2 size, Taps taps, bool near_light_image) {
   float d = texelFetch(gbuffer_distance, pixel, 0).r;
-  Upsampled u = upsample(pixel, size, d, near_light_image);
+  Upsampled u = upsample(taps, d, near_light_image);
   imageStore(airlight_out, pixel, vec4(u.value, 1.0));
 #ifdef BILATERAL
   imageStore(failed_out, pixel, vec4(u.failed ? d : -1.0));
@@ -93,25 +107,61 @@ void upsample_pixel(ivec2 pixel, ivec2 size, bool near_light_image) {
 #endif
 }
 
-// DIVISOR × DIVISOR pixels an invocation, a coarse pixel's worth: on
-// llvmpipe an invocation's own cost is a good part of a pass this short.
 // Whether a light's image lies within `near_light` pixels (Chebyshev, the
-// square the interleaved guard uses too) of the block from `first`: every
+// square the interleaved guard uses too) of the 2×2 block from `first`: every
 // pixel of the block is then recomputed.
 bool near_light_image(ivec2 first) {
   bool near = false;
 #ifdef BILATERAL
-  vec2 centre = vec2(first) + 0.5 * float(DIVISOR);
+  vec2 centre = vec2(first) + 1.0;
   for (int i = 0; i < light_images; ++i)
-    near = near || all(lessThanEqual(abs(light_image[i] - centre), vec2(near_light + 0.5 * float(DIVISOR))));
+    near = near || all(lessThanEqual(abs(light_image[i] - centre), vec2(near_light + 1.0)));
 #endif
   return near;
 }
 
+#ifdef EXACT
+// Where the sizes divide by DIVISOR, an invocation's 2×2 pixels read the
+// coarse pixels around their own at offsets and fractions fixed by their
+// place in it: 9 fetches for 4 pixels at 1/2, 4 at 1/4 (texel fetches are
+// most of this pass's cost on llvmpipe). A pixel at r within its coarse
+// pixel has its base at the coarse pixel − 1 + o, o = (2r ≥ DIVISOR).
+const int SPAN = DIVISOR == 2 ? 3 : 2;  // coarse pixels read per axis
+vec4 around[SPAN * SPAN];
+
+// The taps of the pixel at r in its coarse pixel, from `around` at k: at 1/2
+// r and k are the pixel's place in the invocation, constants once the loops
+// are unrolled (an array indexed by a variable is a ladder of selects); at
+// 1/4 the invocation's pixels share their taps, k = 0.
+Taps block_taps(ivec2 r, ivec2 k) {
+  ivec2 o = ivec2(greaterThanEqual(2 * r, ivec2(DIVISOR)));
+  vec2 at = (vec2(r) + 0.5) / float(DIVISOR) - 0.5;  // from the coarse pixel's centre
+  return Taps(around[SPAN * k.y + k.x], around[SPAN * k.y + k.x + 1], around[SPAN * (k.y + 1) + k.x],
+              around[SPAN * (k.y + 1) + k.x + 1], at - vec2(o - 1));
+}
+#endif
+
+// 2×2 pixels an invocation: on llvmpipe an invocation's own cost is a good
+// part of a pass this short.
 void main() {
-  ivec2 size = textureSize(gbuffer_distance, 0), first = ivec2(gl_GlobalInvocationID.xy) * DIVISOR;
+  ivec2 size = textureSize(gbuffer_distance, 0), first = ivec2(gl_GlobalInvocationID.xy) * 2;
+  if (any(greaterThanEqual(first, size))) return;
   bool near = near_light_image(first);
-  for (int y = 0; y < DIVISOR; ++y)
-    for (int x = 0; x < DIVISOR; ++x)
-      if (all(lessThan(first + ivec2(x, y), size))) upsample_pixel(first + ivec2(x, y), size, near);
+#ifdef EXACT
+  // At 1/2 an invocation is a coarse pixel (r0 = 0); at 1/4 a quarter of one.
+  ivec2 coarse_pixel = first / DIVISOR, r0 = DIVISOR == 2 ? ivec2(0) : first % DIVISOR;
+  ivec2 hi = textureSize(coarse, 0) - 1;
+  ivec2 corner = coarse_pixel - 1 + ivec2(greaterThanEqual(2 * r0, ivec2(DIVISOR)));
+  for (int k = 0; k < SPAN * SPAN; ++k)
+    around[k] = texelFetch(coarse, clamp(corner + ivec2(k % SPAN, k / SPAN), ivec2(0), hi), 0);
+#endif
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x) {
+      ivec2 pixel = first + ivec2(x, y);
+#ifdef EXACT
+      upsample_pixel(pixel, size, block_taps(r0 + ivec2(x, y), DIVISOR == 2 ? ivec2(x, y) : ivec2(0)), near);
+#else
+      if (all(lessThan(pixel, size))) upsample_pixel(pixel, size, fetched_taps(pixel, size), near);
+#endif
+    }
 }
