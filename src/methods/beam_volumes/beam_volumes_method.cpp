@@ -59,7 +59,7 @@ MethodInfo beam_volumes_method() {
           224, kit::gpu_memory(beam_volumes_memory), {.caster_triangles = true},
           {{"exact", {"samples=512"}, Trial::Measure::worst_pixel, 0.02,
             "exact shadows from the beam trees of the casters' triangles and Γ in closed form (512 points per "
-            "interval where there is none): issue 25's bound for the exact methods"}},
+            "interval where there is none): issue 25's bound for the exact methods"}, kit::reduced_trial("beam_volumes")},
           {{"max_triangles", "caster triangles summed over its lights",
             "each light's beam tree holds every caster triangle and is built on the CPU every frame",
             [](const Scene& scene) {

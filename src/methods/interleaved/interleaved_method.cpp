@@ -81,7 +81,7 @@ MethodInfo interleaved_method() {
           224, kit::gpu_memory(), {},
           {kit::high_quality_trial({"steps=512", "shadow_resolution=2048"},
             "512 equiangular samples per light over 4×4 blocks and 2048² maps: the gather blurs only within "
-            "a block, guarded against silhouettes")}, {}};
+            "a block, guarded against silhouettes"), kit::reduced_trial("interleaved")}, {}};
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ MethodInfo raymarch_method() {
           160, kit::gpu_memory(), {},
           {kit::high_quality_trial({"steps=512", "shadow_resolution=2048"},
             "512 equiangular steps per light and 2048² maps: at 32×24 a pixel spans many texels, so what is "
-            "left is the sampling along the ray")}, {}};
+            "left is the sampling along the ray"), kit::reduced_trial("raymarch")}, {}};
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ MethodInfo shadow_planes_method() {
           224, kit::gpu_memory(shadow_planes_memory), {.caster_triangles = true},
           {{"exact", {"samples=512"}, Trial::Measure::worst_pixel, 0.02,
             "exact shadows from the casters' own triangles and Γ in closed form (512 points per interval where "
-            "there is none: gobos, the simplified model): issue 25's bound for the exact methods"}},
+            "there is none: gobos, the simplified model): issue 25's bound for the exact methods"}, kit::reduced_trial("shadow_planes")},
           {{"max_edges", "caster triangle edges summed over its lights",
             "each edge may be a shadow plane, and the planes are drawn across the image",
             [](const Scene& scene) {

@@ -117,7 +117,7 @@ MethodInfo sv_march_method() {
             "512 steps per light inside the shells, closed form outside them with 256 samples of its "
             "correction (a light's leg through a dense volume, random scene 13, was 3.8 % off at 64, 0.3 % "
             "at 256; at 512 llvmpipe's loop limit cuts the exact parts short, seed 31: docs/decisions.md), "
-            "2048² maps: the sampling within the shells is what is left")}, {}};
+            "2048² maps: the sampling within the shells is what is left"), kit::reduced_trial("sv_march")}, {}};
 }
 
 }  // namespace

@@ -25,6 +25,10 @@ auto create(Args... args) {
 // A sampling method's "high quality" trial: its rRMSE at `settings` over its
 // defaults within 3 % rRMSE (docs/design.md §6), `left` saying what error those settings leave.
 Trial high_quality_trial(std::vector<std::string> settings, const std::string& left);
+// The trial of a per-pixel method at scale = 1/2 (per_pixel_settings): its
+// image against the bracket of the reference and its own at full scale, so
+// that what is bounded is what the reduced resolution adds.
+Trial reduced_trial(const std::string& method);
 
 }  // namespace airlight::kit
 
