@@ -49,8 +49,8 @@ def main():
                     print(f'| {scene} | {w}×{h} | {m} | no run reaches it | | | | |' + (' |' if old else ''))
                     continue
                 line = (f'| {scene} | {w}×{h} | {m} | {short(r)} | {own(r) * 1e3:.1f} | '
-                        f'{float(r["frame_median_s"]) * 1e3:.1f} | {float(r["rel_rmse"]):.3g} | '
-                        f'{own(r) / own(best):.2f} |' if best else '|')
+                        f'{float(r["frame_median_s"]) * 1e3:.1f} | {float(r["rel_rmse"]):.3g} | ')
+                line += f'{own(r) / own(best):.2f} |' if best else ' |'
                 if old:
                     line += f' {own(before) / own(r):.2f} |' if before else ' |'
                 print(line)

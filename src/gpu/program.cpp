@@ -164,6 +164,13 @@ void dispatch_pixels(int width, int height) {
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
+void dispatch_indirect(const Buffer& counts) {
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counts.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
 Image read_image(const Texture& texture, int width, int height) {
   std::vector<glm::vec3> rows(static_cast<size_t>(width) * height);
   glGetTextureImage(texture.id(), 0, GL_RGB, GL_FLOAT, static_cast<GLsizei>(rows.size() * sizeof(glm::vec3)),

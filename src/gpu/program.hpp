@@ -60,6 +60,9 @@ inline constexpr int pixel_workgroup = 8;
 // Runs the bound compute program over width × height pixels in 8×8 workgroups
 // (local_size_x = local_size_y = 8), then a memory barrier for what reads its output.
 void dispatch_pixels(int width, int height);
+// Runs the bound compute program over the workgroup counts at the start of
+// `counts` (x, y, z: an indirect dispatch), then the same memory barrier.
+void dispatch_indirect(const Buffer& counts);
 
 // An RGBA32F (or R32F) texture's RGB as an Image, top row first (GL row y is
 // image row height − 1 − y).

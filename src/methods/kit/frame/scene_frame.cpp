@@ -84,11 +84,10 @@ void SceneFrame::use_grid(const Texture& distance, int width, int height, const 
 }
 
 void SceneFrame::dispatch_pixels() const {
-  if (!grid_tiles_) return gpu::dispatch_pixels(grid_width_, grid_height_);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, grid_tiles_->id());
-  glDispatchComputeIndirect(0);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  if (grid_tiles_)
+    gpu::dispatch_indirect(*grid_tiles_);
+  else
+    gpu::dispatch_pixels(grid_width_, grid_height_);
 }
 
 void SceneFrame::use_gbuffer_grid() {

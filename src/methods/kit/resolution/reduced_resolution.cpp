@@ -4,7 +4,6 @@
 #include "geometry/camera.hpp"
 #include "methods/kit/frame/bindings.hpp"
 
-#include <airlight/error.hpp>
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -16,7 +15,6 @@ using namespace gpu;
 
 namespace {
 
-enum class Scale { full, half, quarter };     // the `scale` setting's choices, in order
 enum class Upsample { bilateral, bilinear };  // the `upsample` setting's choices
 
 constexpr GLuint first_texture = binding::first_free_texture;
@@ -65,14 +63,15 @@ std::vector<SettingSpec> resolution_settings() {
            "and farthest of the G-buffer's, as a checkerboard) and bring it back by upsample"},
           {"upsample", T::choice, 0, 0, 0, {"bilateral", "bilinear"},
            "from a coarser scale: bilateral = joint bilateral upsampling guided by the full-resolution "
-           "distance, pixels with every coarse neighbour across a depth edge recomputed on the full grid "
-           "(stat recomputed_fraction); bilinear = plain bilinear, nothing recomputed"}};
+           "distance, the pixels it cannot place (every coarse neighbour across a depth edge, neighbours that "
+           "disagree, a light's image near) recomputed at full scale (stat recomputed_fraction); bilinear = "
+           "plain bilinear, nothing recomputed"}};
 }
 
 ResolutionSettings ResolutionSettings::from(const Settings& settings) {
   const auto& specs = settings.specs();
   if (std::none_of(specs.begin(), specs.end(), [](const SettingSpec& s) { return s.name == "scale"; })) return {};
-  constexpr int divisors[] = {1, 2, 4};
+  constexpr int divisors[] = {1, 2, 4};  // the `scale` setting's choices, in order
   return {divisors[settings.choice_index("scale")], settings.option<Upsample>("upsample") == Upsample::bilateral};
 }
 
@@ -174,10 +173,7 @@ void ReducedResolution::merge(SceneFrame& frame, const Texture& target, PassTime
   glBindTextureUnit(first_texture + 1, recomputed_.id());
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::tiles, tiles_.id());
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, tiles_.id());
-  glDispatchComputeIndirect(0);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  dispatch_indirect(tiles_);
 }
 
 double ReducedResolution::recomputed_fraction() const {
