@@ -22,6 +22,7 @@ private:
   void build_frame(const SceneFrame& frame, PassTimer& timer) override;
   void render_airlight(const SceneFrame& frame, const Texture& target, PassTimer& timer) override;
   bool uses_shadow_maps() const override { return geometry_->uses_shadow_maps(); }
+  bool draws_on_grid() const override { return true; }
   std::vector<std::pair<std::string, double>> stats() const override;
 
   std::unique_ptr<CrossingGeometry> geometry_;

@@ -11,7 +11,7 @@ std::string binding_defines() {
   const std::pair<const char*, GLuint> all[] = {
       {"FRAME_BLOCK", frame_block},   {"LIGHTS", lights},
       {"VOLUMES", volumes},           {"LOBES", lobes},
-      {"FACE_NORMALS", face_normals}, {"OBJECTS", objects}, {"TILES", tiles},
+      {"FACE_NORMALS", face_normals}, {"OBJECTS", objects}, {"PIXEL_LIST", pixel_list},
       {"DISTANCE", distance},         {"NORMAL", normal},
       {"GEOMETRIC_NORMAL", geometric_normal}, {"ALBEDO", albedo},
       {"GOBOS", gobos},               {"SHADOW_MAPS", shadow_maps},
@@ -30,7 +30,7 @@ void SceneFrame::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::lobes, lobes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::face_normals, face_normals_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::objects, objects_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::tiles, grid_tiles_ ? grid_tiles_->id() : 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::pixel_list, grid_list_ ? grid_list_->id() : 0);
   glBindTextureUnit(binding::distance, distance().id());
   glBindTextureUnit(binding::normal, normal_.id());
   glBindTextureUnit(binding::geometric_normal, geometric_normal_.id());

@@ -27,7 +27,7 @@ struct FrameData {
   int light_count;
   int volume_count;
   int medium_lobes;      // the medium's phase lobes are lobes[0 .. medium_lobes)
-  int sparse;            // 1: the grid's pixels are the tiles of FrameTiles (pixel.glsl)
+  int sparse;            // 1: the grid's pixels are those of its PixelList (pixel.glsl)
 };
 
 // One light (std430 array).

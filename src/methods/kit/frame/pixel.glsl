@@ -4,21 +4,19 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;  // gpu::pixel_workgroup, as gpu::dispatch_pixels runs it
 
-#define TILES_READONLY
-#include "methods/kit/frame/tiles.glsl"
+#define PIXEL_LIST_READONLY
+#include "methods/kit/frame/pixel_list.glsl"
 
-// This invocation's pixel: its global id, or on a sparse grid its place in
-// its tile.
-ivec2 frame_pixel() { return frame.sparse == 0 ? ivec2(gl_GlobalInvocationID.xy) : tile_pixel(); }
+// This invocation's pixel: its global id, or on a sparse grid the pixel
+// listed for it.
+ivec2 frame_pixel() { return frame.sparse == 0 ? ivec2(gl_GlobalInvocationID.xy) : listed_pixel(); }
 
 // Declares `pixel`, this invocation's pixel in GL window coordinates, and
 // returns from main past the frame's edge (the dispatch covers the frame in
-// whole workgroups) and where the grid's distance is negative: a pixel the
-// grid leaves out (SceneFrame::use_grid — reduced resolution recomputes a few
-// pixels of the full grid).
-#define FRAME_PIXEL_OR_RETURN(pixel)                                                   \
-  ivec2 pixel = frame_pixel();                                                        \
-  if (any(greaterThanEqual(uvec2(pixel), uvec2(frame_size()))) || surface_distance(pixel) < 0.0) return
+// whole workgroups, a sparse grid's list in whole ones too).
+#define FRAME_PIXEL_OR_RETURN(pixel)   \
+  ivec2 pixel = frame_pixel();        \
+  if (any(greaterThanEqual(uvec2(pixel), uvec2(frame_size())))) return
 
 // A pixel's view ray from frame.eye: the unit direction through its centre
 // and the G-buffer distance d along it (the visible surface or the far plane).

@@ -47,7 +47,7 @@ void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings
   resize(inputs.width, inputs.height);
   inputs_ = inputs;
   grid_distance_ = nullptr;
-  grid_tiles_ = nullptr;
+  grid_list_ = nullptr;
   grid_width_ = inputs.width;
   grid_height_ = inputs.height;
   upload_inputs(settings, engine, needs.shadows);
@@ -72,26 +72,26 @@ void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings
   }
 }
 
-void SceneFrame::use_grid(const Texture& distance, int width, int height, const Buffer* tiles) {
+void SceneFrame::use_grid(const Texture& distance, int width, int height, const Buffer* pixel_list) {
   grid_distance_ = &distance;
-  grid_tiles_ = tiles;
+  grid_list_ = pixel_list;
   grid_width_ = width;
   grid_height_ = height;
   const glm::vec2 size(width, height);
   glNamedBufferSubData(frame_block_.id(), offsetof(shader::FrameData, size), sizeof size, &size);
-  const int sparse = tiles ? 1 : 0;
+  const int sparse = pixel_list ? 1 : 0;
   glNamedBufferSubData(frame_block_.id(), offsetof(shader::FrameData, sparse), sizeof sparse, &sparse);
 }
 
 void SceneFrame::dispatch_pixels() const {
-  if (grid_tiles_)
-    gpu::dispatch_indirect(*grid_tiles_);
+  if (grid_list_)
+    gpu::dispatch_indirect(*grid_list_);
   else
     gpu::dispatch_pixels(grid_width_, grid_height_);
 }
 
-void SceneFrame::use_gbuffer_grid() {
-  use_grid(distance_, inputs_.width, inputs_.height);
+void SceneFrame::use_gbuffer_grid(const Buffer* pixel_list) {
+  use_grid(distance_, inputs_.width, inputs_.height, pixel_list);
   grid_distance_ = nullptr;
 }
 

@@ -77,15 +77,18 @@ public:
   // the G-buffer's after render(), or one that methods/kit/resolution puts in
   // its place — a coarser grid over the same view, or the G-buffer's with
   // pixels left out. `distance` (R32F, width × height) takes the G-buffer
-  // distance's binding, a negative value marking a pixel the method skips
-  // (FRAME_PIXEL_OR_RETURN, pixel.glsl); the frame block's size follows, and
-  // width(), height() and bind() are the grid's. Call bind() after a change.
-  // A sparse grid (`tiles` not null: a FrameTiles buffer, pixel.glsl) is the
-  // full one's size, its pixels only those of the listed 8×8 tiles.
-  void use_grid(const Texture& distance, int width, int height, const Buffer* tiles = nullptr);
-  void use_gbuffer_grid();
+  // distance's binding; the frame block's size follows, and width(),
+  // height() and bind() are the grid's. Call bind() after a change. A sparse
+  // grid (`pixel_list` not null: a PixelList buffer, pixel.glsl) is the full
+  // one's size, its pixels only those listed, which dispatch_pixels() runs;
+  // its distance is negative at every other pixel, which the passes that
+  // draw rather than dispatch (a fragment tests t against the distance) skip.
+  void use_grid(const Texture& distance, int width, int height, const Buffer* pixel_list = nullptr);
+  // The G-buffer's grid, all of it or (`pixel_list` not null) the pixels
+  // listed, for passes that only dispatch.
+  void use_gbuffer_grid(const Buffer* pixel_list = nullptr);
   // Runs the bound per-pixel program (pixel.glsl) over the grid: every
-  // workgroup of width() × height(), or a sparse grid's tiles (an indirect
+  // workgroup of width() × height(), or a sparse grid's list (an indirect
   // dispatch); then a memory barrier, as gpu::dispatch_pixels.
   void dispatch_pixels() const;
 
@@ -154,7 +157,7 @@ private:
   std::vector<Bounds> caster_bounds_;  // per mesh, in object space (caster_bounds)
   int index_count_ = 0, caster_index_count_ = 0, shadow_resolution_ = 0;
   const Texture* grid_distance_ = nullptr;  // null: the G-buffer's
-  const Buffer* grid_tiles_ = nullptr;      // null: every pixel
+  const Buffer* grid_list_ = nullptr;       // null: every pixel
   int grid_width_ = 0, grid_height_ = 0;
 
   VertexArray vertex_array_;

@@ -33,16 +33,17 @@ namespace {
 
 // ReducedResolution's textures: the coarse grid's airlight (16 bytes) and
 // distance (4); with bilateral upsampling the full grid's failed pixels'
-// distance (4), the recomputation's (4) and its airlight (16), and its tiles' list and
-// flags (12 bytes a tile of 8×8 and a header of 16).
+// distance (4), their list (4 and a header of 16) and the recomputation's
+// airlight (16), and for a method that recomputes a halo its grid's distance
+// and list (8 and 16).
 std::vector<MemoryNeed> resolution_needs(const Settings& settings, int width, int height) {
   const ResolutionSettings r = ResolutionSettings::from(settings);
   if (r.divisor == 1) return {};
   const double coarse = std::ceil(double(width) / r.divisor) * std::ceil(double(height) / r.divisor);
-  const double full = double(width) * height, tiles = std::ceil(width / 8.0) * std::ceil(height / 8.0);
+  const double full = double(width) * height;
   return {{"scale", "the coarse grid's airlight and distance", 20.0 * coarse, 0.0, 16.0 * coarse},
-          {"upsample", "the recomputed pixels' mask, distance and airlight on the full grid",
-           r.bilateral ? 24.0 * full + 12.0 * tiles + 16.0 : 0.0, 0.0, r.bilateral ? 16.0 * full : 0.0}};
+          {"upsample", "at most: the recomputed pixels' distance, list and airlight on the full grid, and a halo's",
+           r.bilateral ? 32.0 * full + 32.0 : 0.0, 0.0, r.bilateral ? 16.0 * full : 0.0}};
 }
 
 }  // namespace
@@ -109,7 +110,7 @@ void GpuMethod::render_reduced(PassTimer& timer) {
   render_airlight(frame_, resolution_.coarse_target(), timer);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   coarse_stats_ = stats();
-  if (!resolution_.upsample(frame_, airlight_, recompute_halo(), timer)) return;
+  if (!resolution_.upsample(frame_, airlight_, {recompute_halo(), draws_on_grid()}, timer)) return;
   render_airlight(frame_, resolution_.recompute_target(), timer);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   resolution_.merge(frame_, airlight_, timer);

@@ -69,6 +69,11 @@ protected:
   // (Chebyshev), the method's result at a pixel reads other pixels' results
   // of the same frame — what a recomputed pixel needs recomputed around it.
   virtual int recompute_halo() const { return 0; }
+  // Whether the method draws on its grid with fragments that skip a pixel
+  // whose grid distance is below their t: the pixels a recomputation leaves
+  // out are then marked with −1 for them (SceneFrame::use_grid), which costs
+  // the upsampling a store a pixel.
+  virtual bool draws_on_grid() const { return false; }
 
 private:
   void draw(const FrameInputs& inputs, const EngineFrame* engine);

@@ -18,9 +18,8 @@ namespace {
 enum class Upsample { bilateral, bilinear };  // the `upsample` setting's choices
 
 constexpr GLuint first_texture = binding::first_free_texture;
-constexpr GLuint counter_binding = binding::first_free_storage, light_images_binding = counter_binding + 1;
-constexpr GLuint tile_flags_binding = light_images_binding + 1;
-constexpr GLsizeiptr tile_header = 4 * sizeof(GLuint);  // tiles.glsl's tile_groups
+constexpr GLuint light_images_binding = binding::first_free_storage;
+constexpr GLsizeiptr list_header = 4 * sizeof(GLuint);  // pixel_list.glsl's list_groups
 
 // Pixels within this many coarse pixels of a light's image are recomputed:
 // linear interpolation of L_air ∝ 1/h over a coarse pixel of D pixels errs by
@@ -45,13 +44,31 @@ std::vector<glm::vec2> light_images(const FrameInputs& in) {
   return images;
 }
 
+// A pixel list (frame/pixel_list.glsl) with room for every pixel of the grid.
+Buffer make_list(int width, int height) {
+  return make_buffer(list_header + GLsizeiptr(width) * height * GLsizeiptr(sizeof(GLuint)), nullptr);
+}
+
+// Empties `list` and binds it, for a pass to append to.
+void clear_list(const Buffer& list) {
+  const GLuint empty[4] = {0, 0, 0, 0};
+  glNamedBufferSubData(list.id(), 0, sizeof empty, empty);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::pixel_list, list.id());
+}
+
 std::string define(const char* name, int value) { return "#define " + std::string(name) + " " + std::to_string(value) + "\n"; }
 
 const Program& program(const std::string& name, const std::string& defines) {
   return cached_compute_program("methods/kit/resolution/" + name + ".comp.glsl",
-                                binding_defines() + define("BINDING_RECOMPUTED", counter_binding) +
-                                    define("BINDING_LIGHT_IMAGES", light_images_binding) +
-                                    define("BINDING_TILE_FLAGS", tile_flags_binding) + defines);
+                                binding_defines() + define("BINDING_LIGHT_IMAGES", light_images_binding) + defines);
+}
+
+// The indirect dispatch's workgroups of the bound `list` once it is written.
+void count_groups(const Buffer& list) {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::pixel_list, list.id());
+  glUseProgram(program("list_groups", "").id());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
 }  // namespace
@@ -84,14 +101,12 @@ void ReducedResolution::allocate(const SceneFrame& frame) {
   coarse_height_ = (height + settings_.divisor - 1) / settings_.divisor;
   coarse_distance_ = make_texture(GL_TEXTURE_2D, GL_R32F, coarse_width_, coarse_height_);
   coarse_airlight_ = make_texture(GL_TEXTURE_2D, GL_RGBA32F, coarse_width_, coarse_height_);
+  failed_ = {};
+  halo_distance_ = {};
+  halo_list_ = {};
   if (!settings_.bilateral) return;
-  failed_ = make_texture(GL_TEXTURE_2D, GL_R32F, width, height);
-  recompute_distance_ = make_texture(GL_TEXTURE_2D, GL_R32F, width, height);
   recomputed_ = make_texture(GL_TEXTURE_2D, GL_RGBA32F, width, height);
-  if (!counter_) counter_ = make_buffer(sizeof(GLuint), nullptr);
-  const GLsizeiptr tiles = GLsizeiptr((width + 7) / 8) * ((height + 7) / 8);
-  tiles_ = make_buffer(tile_header + tiles * 2 * sizeof(GLuint), nullptr);
-  tile_flags_ = make_buffer(tiles * sizeof(GLuint), nullptr);
+  failed_list_ = make_list(width, height);
 }
 
 void ReducedResolution::reduce(SceneFrame& frame, PassTimer& timer) {
@@ -109,7 +124,7 @@ std::string ReducedResolution::upsample_defines() const {
   return define("DIVISOR", settings_.divisor) + (exact ? "#define EXACT\n" : "");
 }
 
-bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, int halo, PassTimer& timer) {
+bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, RecomputeGrid grid, PassTimer& timer) {
   ScopedPass pass(timer, "upsample");
   frame.use_gbuffer_grid();
   frame.bind();
@@ -124,38 +139,41 @@ bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, int h
     dispatch_pixels((width_ + 1) / 2, (height_ + 1) / 2);  // 2×2 pixels an invocation
     return false;
   }
-  const GLuint zero = 0, no_tiles[4] = {0, 0, 0, 0};
-  glClearNamedBufferData(counter_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glNamedBufferSubData(tiles_.id(), 0, sizeof no_tiles, no_tiles);
-  glClearNamedBufferData(tile_flags_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::tiles, tiles_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tile_flags_binding, tile_flags_.id());
-  const Program& upsample = program("upsample", "#define BILATERAL\n" + define("HALO", halo) + upsample_defines());
+  clear_list(failed_list_);
+  // The failed pixels' distance is written only where it is read: by a
+  // marked grid, or to find a halo (on llvmpipe a full-grid store is a good
+  // part of this pass).
+  const bool mark = grid.marked || grid.halo > 0;
+  if (mark && !failed_) failed_ = make_texture(GL_TEXTURE_2D, GL_R32F, width_, height_);
+  const Program& upsample = program("upsample", "#define BILATERAL\n" + upsample_defines() + (mark ? "#define MARK\n" : ""));
   glUseProgram(upsample.id());
   set_uniform(upsample, "light_images", upload_light_images(frame));
   set_uniform(upsample, "near_light", near_light_coarse_pixels * settings_.divisor);
-  glBindImageTexture(1, failed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, counter_binding, counter_.id());
+  if (mark) glBindImageTexture(1, failed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, light_images_binding, light_images_.id());
   dispatch_pixels((width_ + 1) / 2, (height_ + 1) / 2);  // 2×2 pixels an invocation
-  list_tiles(halo);
-  frame.use_grid(halo > 0 ? recompute_distance_ : failed_, width_, height_, &tiles_);
+  count_groups(failed_list_);
+  if (grid.halo > 0) list_halo(grid);
+  const Buffer& list = grid.halo > 0 ? halo_list_ : failed_list_;
+  if (grid.marked)
+    frame.use_grid(grid.halo > 0 ? halo_distance_ : failed_, width_, height_, &list);
+  else
+    frame.use_gbuffer_grid(&list);
   frame.bind();
   return true;
 }
 
-// The recomputation's grid, where the method's result reads a halo (with
-// none, upsample wrote it), and its tiles' indirect dispatch.
-void ReducedResolution::list_tiles(int halo) {
-  if (halo > 0) {
-    glUseProgram(program("recompute_grid", define("HALO", halo)).id());
-    glBindTextureUnit(first_texture, failed_.id());
-    glBindImageTexture(0, recompute_distance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    dispatch_pixels(width_, height_);
-  }
-  glUseProgram(program("tile_groups", "").id());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+// The pixels to recompute where the method's result reads a halo around each
+// failed pixel, listed, and for a marked grid their distance.
+void ReducedResolution::list_halo(RecomputeGrid grid) {
+  if (!halo_list_) halo_list_ = make_list(width_, height_);
+  if (grid.marked && !halo_distance_) halo_distance_ = make_texture(GL_TEXTURE_2D, GL_R32F, width_, height_);
+  clear_list(halo_list_);
+  glUseProgram(program("recompute_grid", define("HALO", grid.halo) + (grid.marked ? "#define MARK\n" : "")).id());
+  glBindTextureUnit(first_texture, failed_.id());
+  if (grid.marked) glBindImageTexture(0, halo_distance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  dispatch_pixels(width_, height_);
+  count_groups(halo_list_);
 }
 
 int ReducedResolution::upload_light_images(const SceneFrame& frame) {
@@ -169,17 +187,16 @@ void ReducedResolution::merge(SceneFrame& frame, const Texture& target, PassTime
   frame.use_gbuffer_grid();
   frame.bind();
   glUseProgram(program("merge", "").id());
-  glBindTextureUnit(first_texture, failed_.id());
-  glBindTextureUnit(first_texture + 1, recomputed_.id());
+  glBindTextureUnit(first_texture, recomputed_.id());
   glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::tiles, tiles_.id());
-  dispatch_indirect(tiles_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::pixel_list, failed_list_.id());
+  dispatch_indirect(failed_list_);
 }
 
 double ReducedResolution::recomputed_fraction() const {
-  if (!counter_ || width_ == 0) return 0.0;
-  GLuint count = 0;
-  glGetNamedBufferSubData(counter_.id(), 0, sizeof count, &count);
+  if (!failed_list_ || width_ == 0) return 0.0;
+  GLuint count = 0;  // list_groups.w
+  glGetNamedBufferSubData(failed_list_.id(), 3 * sizeof(GLuint), sizeof count, &count);
   return static_cast<double>(count) / (static_cast<double>(width_) * height_);
 }
 

@@ -31,6 +31,13 @@ struct ResolutionSettings {
   static ResolutionSettings from(const Settings& settings);
 };
 
+// What a method's passes need of the grid of the pixels it recomputes
+// (GpuMethod::recompute_halo, draws_on_grid).
+struct RecomputeGrid {
+  int halo = 0;         // pixels (Chebyshev) around each failed one
+  bool marked = false;  // a distance of −1 at the pixels left out
+};
+
 class ReducedResolution {
 public:
   explicit ReducedResolution(ResolutionSettings settings) : settings_(settings) {}
@@ -43,10 +50,10 @@ public:
 
   // The coarse airlight upsampled into `target` on the G-buffer's grid
   // ("upsample"). With bilateral upsampling, the frame then on the grid of
-  // the pixels to recompute — each failed pixel and its `halo` (pixels,
-  // Chebyshev) — bound, for the method to render into recompute_target();
-  // returns whether that is wanted.
-  bool upsample(SceneFrame& frame, const Texture& target, int halo, PassTimer& timer);
+  // the pixels to recompute — each failed pixel and the `grid`'s halo around
+  // it — bound, for the method to render into recompute_target(); returns
+  // whether that is wanted.
+  bool upsample(SceneFrame& frame, const Texture& target, RecomputeGrid grid, PassTimer& timer);
   const Texture& recompute_target() const { return recomputed_; }
   // The recomputed pixels copied into `target` ("merge"); the frame back on
   // the G-buffer's grid, bound.
@@ -59,13 +66,18 @@ public:
 private:
   void allocate(const SceneFrame& frame);
   int upload_light_images(const SceneFrame& frame);
-  void list_tiles(int halo);
+  void list_halo(RecomputeGrid grid);
   std::string upsample_defines() const;
 
   ResolutionSettings settings_;
   int width_ = 0, height_ = 0, coarse_width_ = 0, coarse_height_ = 0;
-  Texture coarse_distance_, coarse_airlight_, failed_, recompute_distance_, recomputed_;
-  Buffer counter_, tiles_, tile_flags_;  // the recomputed pixels' count; the recomputation's tiles (frame/tiles.glsl)
+  Texture coarse_distance_, coarse_airlight_, recomputed_;
+  Buffer failed_list_;  // the failed pixels (frame/pixel_list.glsl)
+  // Made on first use: the failed pixels' distance (−1 elsewhere), for a
+  // marked grid or a halo; with a halo, the recomputation's pixels and their
+  // distance.
+  Texture failed_, halo_distance_;
+  Buffer halo_list_;
   gpu::GrowingBuffer<glm::vec2> light_images_;
 };
 

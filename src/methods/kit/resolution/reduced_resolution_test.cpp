@@ -54,8 +54,8 @@ TEST(ReducedResolution, PassesAtEachScale) {
 }
 
 // The estimate counts the coarse grid's textures and, with bilateral
-// upsampling, the full grid's three and its tiles: 20 bytes a coarse pixel,
-// 24 a pixel, 12 a tile of 8×8 and 16.
+// upsampling, the full grid's textures and lists, a halo's included: 20 bytes
+// a coarse pixel, 32 a pixel and two lists' headers of 16.
 TEST(ReducedResolution, MemoryEstimateCountsItsTextures) {
   const Scene scene = builtin_scene("teapot_spot");
   const MethodInfo& info = find_method("raymarch");
@@ -66,7 +66,7 @@ TEST(ReducedResolution, MemoryEstimateCountsItsTextures) {
     for (const MemoryNeed& need : info.memory(scene, settings, 1000, 600)) sum += need.bytes;
     return sum;
   };
-  EXPECT_DOUBLE_EQ(bytes({"scale=1/2"}) - bytes({"scale=1"}), 20.0 * 500 * 300 + 24.0 * 1000 * 600 + 12.0 * 125 * 75 + 16.0);
+  EXPECT_DOUBLE_EQ(bytes({"scale=1/2"}) - bytes({"scale=1"}), 20.0 * 500 * 300 + 32.0 * 1000 * 600 + 32.0);
   EXPECT_DOUBLE_EQ(bytes({"scale=1/4", "upsample=bilinear"}) - bytes({"scale=1"}), 20.0 * 250 * 150);
 }
 

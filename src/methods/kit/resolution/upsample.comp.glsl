@@ -7,18 +7,20 @@
 // disagree (an edge of L_air itself) and within `near_light` pixels of a
 // point or spot light's image, where L_air changes by large factors from
 // pixel to pixel. Such a pixel is marked, counted, and recomputed on the full
-// grid (the value written here is the bilinear one, until then). With HALO 0
-// this pass also lists the recomputation's tiles.
-#include "methods/kit/frame/tiles.glsl"
+// grid (the value written here is the bilinear one, until then): this pass
+// lists them (pixel_list.glsl), and with MARK writes their distance, −1
+// elsewhere.
+#include "methods/kit/frame/pixel_list.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;  // gpu::pixel_workgroup
 layout(binding = BINDING_DISTANCE) uniform sampler2D gbuffer_distance;
 layout(binding = BINDING_FIRST_FREE_TEXTURE) uniform sampler2D coarse;  // rgb L_air, a the coarse distance (stamp)
 layout(rgba32f, binding = 0) uniform writeonly image2D airlight_out;
-#ifdef BILATERAL
-// The failed pixels' distance, −1 elsewhere: with HALO 0 the recomputation's grid itself.
+#ifdef MARK
+// The failed pixels' distance, −1 elsewhere: the recomputation's grid itself, or what its halo is found from.
 layout(r32f, binding = 1) uniform writeonly image2D failed_out;
-layout(std430, binding = BINDING_RECOMPUTED) buffer Recomputed { uint recomputed; };
+#endif
+#ifdef BILATERAL
 layout(std430, binding = BINDING_LIGHT_IMAGES) readonly buffer LightImages { vec2 light_image[]; };
 uniform int light_images;  // point and spot lights in front of the camera, in window coordinates
 uniform float near_light;  // pixels
@@ -94,17 +96,15 @@ Taps fetched_taps(ivec2 pixel, ivec2 size) {
               at - vec2(base));
 }
 
-void upsample_pixel(ivec2 pixel, ivec2 size, Taps taps, bool near_light_image) {
+// Returns whether the pixel failed.
+bool upsample_pixel(ivec2 pixel, Taps taps, bool near_light_image) {
   float d = texelFetch(gbuffer_distance, pixel, 0).r;
   Upsampled u = upsample(taps, d, near_light_image);
   imageStore(airlight_out, pixel, vec4(u.value, 1.0));
-#ifdef BILATERAL
+#ifdef MARK
   imageStore(failed_out, pixel, vec4(u.failed ? d : -1.0));
-#if HALO == 0
-  if (u.failed) list_tile(pixel, size.x);
 #endif
-  if (u.failed) atomicAdd(recomputed, 1u);
-#endif
+  return u.failed;
 }
 
 // Whether a light's image lies within `near_light` pixels (Chebyshev, the
@@ -155,13 +155,24 @@ void main() {
   for (int k = 0; k < SPAN * SPAN; ++k)
     around[k] = texelFetch(coarse, clamp(corner + ivec2(k % SPAN, k / SPAN), ivec2(0), hi), 0);
 #endif
+  uint failed = 0u;  // a bit a pixel, 1 << (2y + x)
   for (int y = 0; y < 2; ++y)
     for (int x = 0; x < 2; ++x) {
       ivec2 pixel = first + ivec2(x, y);
+      uint bit = 1u << (2 * y + x);
 #ifdef EXACT
-      upsample_pixel(pixel, size, block_taps(r0 + ivec2(x, y), DIVISOR == 2 ? ivec2(x, y) : ivec2(0)), near);
+      if (upsample_pixel(pixel, block_taps(r0 + ivec2(x, y), DIVISOR == 2 ? ivec2(x, y) : ivec2(0)), near)) failed |= bit;
 #else
-      if (all(lessThan(pixel, size))) upsample_pixel(pixel, size, fetched_taps(pixel, size), near);
+      if (all(lessThan(pixel, size)) && upsample_pixel(pixel, fetched_taps(pixel, size), near)) failed |= bit;
 #endif
     }
+#ifdef BILATERAL
+  // One atomic an invocation, not one a pixel: on llvmpipe each costs a loop
+  // over the lanes whether or not they take it.
+  if (failed != 0u) {
+    uint at = list_room(uint(bitCount(failed)));
+    for (int k = 0; k < 4; ++k)
+      if ((failed & (1u << k)) != 0u) list_pixel(at++, first + ivec2(k & 1, k >> 1));
+  }
+#endif
 }
