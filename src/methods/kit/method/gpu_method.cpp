@@ -32,10 +32,11 @@ std::vector<SettingSpec> per_pixel_settings(std::vector<SettingSpec> own) {
 namespace {
 
 // ReducedResolution's textures: the coarse grid's airlight (16 bytes) and
-// distance (4); with bilateral upsampling the full grid's failed pixels'
-// distance (4), their list (4 and a header of 16) and the recomputation's
-// airlight (16), and for a method that recomputes a halo its grid's distance
-// and list (8 and 16).
+// distance (4); with bilateral upsampling, on the full grid, at most: the
+// recomputation's airlight (16), the failed pixels' list (4), and either
+// their distance (4, for a method that draws on its grid) or, for a method
+// that recomputes a halo, a flag a 2×2 block (1), the halo's list (4) and
+// distance (4); two lists' headers of 16.
 std::vector<MemoryNeed> resolution_needs(const Settings& settings, int width, int height) {
   const ResolutionSettings r = ResolutionSettings::from(settings);
   if (r.divisor == 1) return {};
@@ -43,7 +44,7 @@ std::vector<MemoryNeed> resolution_needs(const Settings& settings, int width, in
   const double full = double(width) * height;
   return {{"scale", "the coarse grid's airlight and distance", 20.0 * coarse, 0.0, 16.0 * coarse},
           {"upsample", "at most: the recomputed pixels' distance, list and airlight on the full grid, and a halo's",
-           r.bilateral ? 32.0 * full + 32.0 : 0.0, 0.0, r.bilateral ? 16.0 * full : 0.0}};
+           r.bilateral ? 29.0 * full + 32.0 : 0.0, 0.0, r.bilateral ? 16.0 * full : 0.0}};
 }
 
 }  // namespace

@@ -102,6 +102,7 @@ void ReducedResolution::allocate(const SceneFrame& frame) {
   coarse_distance_ = make_texture(GL_TEXTURE_2D, GL_R32F, coarse_width_, coarse_height_);
   coarse_airlight_ = make_texture(GL_TEXTURE_2D, GL_RGBA32F, coarse_width_, coarse_height_);
   failed_ = {};
+  failed_blocks_ = {};
   halo_distance_ = {};
   halo_list_ = {};
   if (!settings_.bilateral) return;
@@ -140,16 +141,19 @@ bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, Recom
     return false;
   }
   clear_list(failed_list_);
-  // The failed pixels' distance is written only where it is read: by a
-  // marked grid, or to find a halo (on llvmpipe a full-grid store is a good
-  // part of this pass).
-  const bool mark = grid.marked || grid.halo > 0;
+  // The failed pixels' distance is written only for a marked grid without a
+  // halo, which it is (on llvmpipe a store a pixel is a good part of this
+  // pass); a halo is found from flags a 2×2 block.
+  const bool mark = grid.marked && grid.halo == 0, flag_blocks = grid.halo > 0;
   if (mark && !failed_) failed_ = make_texture(GL_TEXTURE_2D, GL_R32F, width_, height_);
-  const Program& upsample = program("upsample", "#define BILATERAL\n" + upsample_defines() + (mark ? "#define MARK\n" : ""));
+  if (flag_blocks && !failed_blocks_) failed_blocks_ = make_texture(GL_TEXTURE_2D, GL_R32F, (width_ + 1) / 2, (height_ + 1) / 2);
+  const Program& upsample = program("upsample", "#define BILATERAL\n" + upsample_defines() + (mark ? "#define MARK\n" : "") +
+                                                    (flag_blocks ? "#define FLAG_BLOCKS\n" : ""));
   glUseProgram(upsample.id());
   set_uniform(upsample, "light_images", upload_light_images(frame));
   set_uniform(upsample, "near_light", near_light_coarse_pixels * settings_.divisor);
   if (mark) glBindImageTexture(1, failed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  if (flag_blocks) glBindImageTexture(2, failed_blocks_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, light_images_binding, light_images_.id());
   dispatch_pixels((width_ + 1) / 2, (height_ + 1) / 2);  // 2×2 pixels an invocation
   count_groups(failed_list_);
@@ -170,9 +174,9 @@ void ReducedResolution::list_halo(RecomputeGrid grid) {
   if (grid.marked && !halo_distance_) halo_distance_ = make_texture(GL_TEXTURE_2D, GL_R32F, width_, height_);
   clear_list(halo_list_);
   glUseProgram(program("recompute_grid", define("HALO", grid.halo) + (grid.marked ? "#define MARK\n" : "")).id());
-  glBindTextureUnit(first_texture, failed_.id());
+  glBindTextureUnit(first_texture, failed_blocks_.id());
   if (grid.marked) glBindImageTexture(0, halo_distance_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-  dispatch_pixels(width_, height_);
+  dispatch_pixels((width_ + 1) / 2, (height_ + 1) / 2);  // 2×2 pixels an invocation
   count_groups(halo_list_);
 }
 

@@ -74,9 +74,9 @@ private:
   Texture coarse_distance_, coarse_airlight_, recomputed_;
   Buffer failed_list_;  // the failed pixels (frame/pixel_list.glsl)
   // Made on first use: the failed pixels' distance (−1 elsewhere), for a
-  // marked grid or a halo; with a halo, the recomputation's pixels and their
-  // distance.
-  Texture failed_, halo_distance_;
+  // marked grid; for a halo, a flag a 2×2 block where one failed, the
+  // recomputation's pixels and, marked, their distance.
+  Texture failed_, failed_blocks_, halo_distance_;
   Buffer halo_list_;
   gpu::GrowingBuffer<glm::vec2> light_images_;
 };

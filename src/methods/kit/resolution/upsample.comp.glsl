@@ -8,8 +8,9 @@
 // point or spot light's image, where L_air changes by large factors from
 // pixel to pixel. Such a pixel is marked, counted, and recomputed on the full
 // grid (the value written here is the bilinear one, until then): this pass
-// lists them (pixel_list.glsl), and with MARK writes their distance, −1
-// elsewhere.
+// lists them (pixel_list.glsl); with MARK it writes their distance, −1
+// elsewhere, and with FLAG_BLOCKS flags each 2×2 block that holds one, for
+// the halo around them (recompute_grid.comp.glsl).
 #include "methods/kit/frame/pixel_list.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;  // gpu::pixel_workgroup
@@ -17,8 +18,12 @@ layout(binding = BINDING_DISTANCE) uniform sampler2D gbuffer_distance;
 layout(binding = BINDING_FIRST_FREE_TEXTURE) uniform sampler2D coarse;  // rgb L_air, a the coarse distance (stamp)
 layout(rgba32f, binding = 0) uniform writeonly image2D airlight_out;
 #ifdef MARK
-// The failed pixels' distance, −1 elsewhere: the recomputation's grid itself, or what its halo is found from.
+// The failed pixels' distance, −1 elsewhere: the recomputation's grid itself.
 layout(r32f, binding = 1) uniform writeonly image2D failed_out;
+#endif
+#ifdef FLAG_BLOCKS
+// Per 2×2 block (an invocation's pixels), 1 where one of them failed.
+layout(r32f, binding = 2) uniform writeonly image2D failed_blocks;
 #endif
 #ifdef BILATERAL
 layout(std430, binding = BINDING_LIGHT_IMAGES) readonly buffer LightImages { vec2 light_image[]; };
@@ -166,6 +171,9 @@ void main() {
       if (all(lessThan(pixel, size)) && upsample_pixel(pixel, fetched_taps(pixel, size), near)) failed |= bit;
 #endif
     }
+#ifdef FLAG_BLOCKS
+  imageStore(failed_blocks, first / 2, vec4(failed != 0u ? 1.0 : 0.0));
+#endif
 #ifdef BILATERAL
   // One atomic an invocation, not one a pixel: on llvmpipe each costs a loop
   // over the lanes whether or not they take it.
