@@ -61,6 +61,7 @@ Upsampled upsample(Taps taps, float d, bool near_light_image) {
   vec3 sum = vec3(0.0), plain = vec3(0.0);
   float weight = 0.0, best = 0.0;
   vec3 least = vec3(uintBitsToFloat(0x7f800000u)), greatest = vec3(0.0);
+  float inverse_d = 1.0 / max(d, 1e-30);
   for (int k = 0; k < 4; ++k) {
     vec2 o = vec2(k & 1, k >> 1);
     vec2 axis = mix(vec2(1.0) - taps.f, taps.f, o);
@@ -69,7 +70,7 @@ Upsampled upsample(Taps taps, float d, bool near_light_image) {
     float w = axis.x * axis.y;
     plain += w * value;
 #ifdef BILATERAL
-    float gap = abs(tap.a - d) / max(d, 1e-30);
+    float gap = abs(tap.a - d) * inverse_d;
     float depth_weight = exp(-(gap * gap) / (RELATIVE_GAP * RELATIVE_GAP));
     best = max(best, depth_weight);
     w *= depth_weight;
@@ -101,9 +102,8 @@ Taps fetched_taps(ivec2 pixel, ivec2 size) {
               at - vec2(base));
 }
 
-// Returns whether the pixel failed.
-bool upsample_pixel(ivec2 pixel, Taps taps, bool near_light_image) {
-  float d = texelFetch(gbuffer_distance, pixel, 0).r;
+// Returns whether the pixel, at distance d, failed.
+bool upsample_pixel(ivec2 pixel, float d, Taps taps, bool near_light_image) {
   Upsampled u = upsample(taps, d, near_light_image);
   imageStore(airlight_out, pixel, vec4(u.value, 1.0));
 #ifdef MARK
@@ -160,15 +160,20 @@ void main() {
   for (int k = 0; k < SPAN * SPAN; ++k)
     around[k] = texelFetch(coarse, clamp(corner + ivec2(k % SPAN, k / SPAN), ivec2(0), hi), 0);
 #endif
+  // The four pixels' distances in one gather (clamped to the edge, which
+  // only pixels past it read): w (0, 0), z (1, 0), x (0, 1), y (1, 1).
+  vec4 g = textureGather(gbuffer_distance, vec2(first + 1) / vec2(size));
+  vec4 distances = vec4(g.w, g.z, g.x, g.y);
   uint failed = 0u;  // a bit a pixel, 1 << (2y + x)
   for (int y = 0; y < 2; ++y)
     for (int x = 0; x < 2; ++x) {
       ivec2 pixel = first + ivec2(x, y);
+      float d = distances[2 * y + x];
       uint bit = 1u << (2 * y + x);
 #ifdef EXACT
-      if (upsample_pixel(pixel, block_taps(r0 + ivec2(x, y), DIVISOR == 2 ? ivec2(x, y) : ivec2(0)), near)) failed |= bit;
+      if (upsample_pixel(pixel, d, block_taps(r0 + ivec2(x, y), DIVISOR == 2 ? ivec2(x, y) : ivec2(0)), near)) failed |= bit;
 #else
-      if (all(lessThan(pixel, size)) && upsample_pixel(pixel, fetched_taps(pixel, size), near)) failed |= bit;
+      if (all(lessThan(pixel, size)) && upsample_pixel(pixel, d, fetched_taps(pixel, size), near)) failed |= bit;
 #endif
     }
 #ifdef FLAG_BLOCKS
