@@ -6,11 +6,11 @@
 // distance, the weights fail; so they do where the neighbours on its side
 // disagree (an edge of L_air itself) and within `near_light` pixels of a
 // point or spot light's image, where L_air changes by large factors from
-// pixel to pixel. Such a pixel is marked, counted, and recomputed on the full
-// grid (the value written here is the bilinear one, until then): this pass
-// lists them (pixel_list.glsl); with MARK it writes their distance, −1
-// elsewhere, and with FLAG_BLOCKS flags each 2×2 block that holds one, for
-// the halo around them (recompute_grid.comp.glsl).
+// pixel to pixel. Such a pixel is recomputed on the full grid (the value
+// written here is 0 until then): this pass lists them (pixel_list.glsl);
+// with MARK it writes their distance, −1 elsewhere, and with FLAG_BLOCKS
+// flags each 2×2 block that holds one, for the halo around them
+// (recompute_grid.comp.glsl).
 #include "methods/kit/frame/pixel_list.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;  // gpu::pixel_workgroup
@@ -57,8 +57,12 @@ struct Taps {
   vec2 f;
 };
 
+// exp(−(gap/RELATIVE_GAP)²) = exp2(gap² · GAP_EXPONENT).
+const float GAP_EXPONENT = -1.0 / (RELATIVE_GAP * RELATIVE_GAP * log(2.0));
+
+// A failed pixel's value is left 0: the recomputation writes it.
 Upsampled upsample(Taps taps, float d, bool near_light_image) {
-  vec3 sum = vec3(0.0), plain = vec3(0.0);
+  vec3 sum = vec3(0.0);
   float weight = 0.0, best = 0.0;
   vec3 least = vec3(uintBitsToFloat(0x7f800000u)), greatest = vec3(0.0);
   float inverse_d = 1.0 / max(d, 1e-30);
@@ -68,10 +72,9 @@ Upsampled upsample(Taps taps, float d, bool near_light_image) {
     vec4 tap = k == 0 ? taps.t00 : k == 1 ? taps.t10 : k == 2 ? taps.t01 : taps.t11;
     vec3 value = tap.rgb;
     float w = axis.x * axis.y;
-    plain += w * value;
 #ifdef BILATERAL
     float gap = abs(tap.a - d) * inverse_d;
-    float depth_weight = exp(-(gap * gap) / (RELATIVE_GAP * RELATIVE_GAP));
+    float depth_weight = exp2(gap * gap * GAP_EXPONENT);
     best = max(best, depth_weight);
     w *= depth_weight;
     if (depth_weight >= MIN_WEIGHT) {
@@ -84,9 +87,9 @@ Upsampled upsample(Taps taps, float d, bool near_light_image) {
   }
 #ifdef BILATERAL
   bool failed = near_light_image || !(best >= MIN_WEIGHT) || any(lessThan(least, (1.0 - CONTRAST) * greatest));
-  return Upsampled(failed ? plain : sum / weight, failed);
+  return Upsampled(failed ? vec3(0.0) : sum / weight, failed);
 #else
-  return Upsampled(plain, false);
+  return Upsampled(sum, false);
 #endif
 }
 
