@@ -126,7 +126,7 @@ float decayed_inverse(float k, float f) {
 // The pieces of segment s (a march's interval) and their shares: equiangular
 // weighted by σ̄ only where volumes make σ̄ vary.
 void weigh_pieces(vec3 dir, Segment s) {
-  bool even = s.h == 0.0;
+  bool even = s.even;
   weighted = SAMPLING != SAMPLING_UNIFORM && (even || VOLUME_COUNT > 0);
   if (!weighted) return;
   piece_start[0] = even ? s.a : s.theta_a;
@@ -176,7 +176,7 @@ vec2 step_sample(Segment s, float u, int n) {
   float y = min(decayed_inverse(k, (target - before) / density), width);
   // dy per unit of u·n; the floor keeps a share that underflowed finite (its integrand is as small)
   float step = mass / (float(n) * max(density * exp(-k * y), 1e-30 * mass));
-  if (s.h == 0.0) return vec2(start + y, step);
+  if (s.even) return vec2(start + y, step);
   float z = s.h * tan(start + y);
   return vec2(s.foot + z, step * (s.h + z * z / s.h));  // dx = h/cos²θ·dθ
 }
@@ -191,10 +191,16 @@ vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) 
   vec3 previous = vec3(0.0);
   bool first = true;
 #endif
+  // Equiangular steps not spent by the pieces walk in θ (equiangular_walk);
+  // `walk` is a constant at every call, so the other path folds away.
+  bool walk = !s.even && !weighted;
+  EquiangularWalk w = equiangular_walk(s, (float(r.first) + offset) / float(r.count),
+                                       float(r.stride) / float(r.count), r.count);
   // Runtime bounds: the steps and this pixel's share of them are settings and
   // pixel positions, not the scene's structure.
   for (int k = r.first; k < r.end; k += r.stride) {
-    vec2 t = step_sample(s, (float(k) + offset) / float(r.count), r.count);
+    vec2 t = walk ? walk_sample(s, w) : step_sample(s, (float(k) + offset) / float(r.count), r.count);
+    if (walk) step_walk(w);
     vec3 x = eye + t.x * dir;
     vec3 eye_depth = eye_leg_depth(eye, x);
     vec3 e = vec3(0.0);
@@ -268,7 +274,7 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset) {
 // ∫ of segment s's sample density over [a, b] ⊂ [s.a, s.b]: ∫dx/r² = Δθ/h about
 // the light's foot point (exact, as equiangular_segment), or the length.
 float segment_measure(Segment s, float a, float b) {
-  if (s.h == 0.0) return b - a;
+  if (s.even) return b - a;
   return (atan2_accurate(b - s.foot, s.h) - atan2_accurate(a - s.foot, s.h)) / s.h;
 }
 

@@ -71,5 +71,41 @@ TEST(OpticsTwin, EquiangularSegmentAndSample) {
   }
 }
 
+// The march's walk in θ (equiangular_walk: tan by the addition formula, a
+// step at a time) against the C++ segment_sample at the same u, after up to
+// 63 steps of every stride a march takes (interleaved's M² up to 64): its
+// error grows by about a rounding a step, and stays within the direct
+// sample's own tolerance.
+TEST(OpticsTwin, EquiangularWalkMatchesTheDirectSample) {
+  std::mt19937 rng(13);
+  std::vector<glm::vec4> in;
+  std::vector<std::pair<double, int>> u_n;  // the sample's u and n, for the C++ side
+  for (int c = 0; c < 4000; ++c) {
+    const glm::vec3 eye(uniform(rng, -5, 5), uniform(rng, -5, 5), uniform(rng, -5, 5));
+    const glm::vec3 dir = glm::normalize(glm::vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)));
+    const glm::vec3 light = eye + uniform(rng, 0, 10) * dir + glm::vec3(uniform(rng, -2, 2), uniform(rng, -2, 2),
+                                                                          uniform(rng, -2, 2));
+    const float a = uniform(rng, 0, 5), b = a + uniform(rng, 0.1f, 20);
+    const int stride = 1 + c % 64, steps = 1 + (c / 64) % 64, n = stride * steps;  // k < steps: inside (0, 1)
+    const int k = c % steps;
+    const float offset = uniform(rng, 0.0f, 1.0f);
+    in.insert(in.end(), {glm::vec4(eye, a), glm::vec4(dir, b), glm::vec4(light, offset),
+                         glm::vec4(float(n), float(stride), float(k), 0.0f)});
+    u_n.emplace_back((k * stride + offset) / n, n);
+  }
+  const auto out = run_twin("equiangular_walk.comp.glsl", in, 4, 1);
+  Errors position("walk x"), weight("walk w");
+  for (size_t i = 0; i < out.size(); ++i) {
+    const glm::vec4* c = &in[4 * i];
+    const Segment s =
+        equiangular_segment(c[0].w, c[1].w, glm::dvec3(c[0]), glm::dvec3(c[1]), glm::dvec3(c[2]));
+    const glm::dvec2 t = segment_sample(s, u_n[i].first, u_n[i].second);
+    const auto describe = [&] { return "case " + std::to_string(i); };
+    const double scale = c[1].w;  // as EquiangularSegmentAndSample: 1e-4 of the interval
+    position.check(out[i].x, t.x, 1e-4 * scale, describe);
+    weight.check(out[i].y, t.y, 1e-4 * std::max(std::abs(t.y), scale / u_n[i].second), describe);
+  }
+}
+
 }  // namespace
 }  // namespace airlight::kit
