@@ -140,14 +140,23 @@ bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, Recom
     dispatch_pixels((width_ + 1) / 2, (height_ + 1) / 2);  // 2×2 pixels an invocation
     return false;
   }
+  bilateral_upsample(frame, grid);
+  use_recompute_grid(frame, grid);
+  return true;
+}
+
+// The bilateral upsampling proper: the failed pixels listed, and for the
+// recomputation's grid their distance (marked, without a halo) or a flag a
+// 2×2 block (to find a halo from). Each only where it is read: on llvmpipe a
+// store a pixel is a good part of this pass.
+void ReducedResolution::bilateral_upsample(const SceneFrame& frame, RecomputeGrid grid) {
   clear_list(failed_list_);
-  // The failed pixels' distance is written only for a marked grid without a
-  // halo, which it is (on llvmpipe a store a pixel is a good part of this
-  // pass); a halo is found from flags a 2×2 block.
   const bool mark = grid.marked && grid.halo == 0, flag_blocks = grid.halo > 0;
   if (mark && !failed_) failed_ = make_texture(GL_TEXTURE_2D, GL_R32F, width_, height_);
-  if (flag_blocks && !failed_blocks_) failed_blocks_ = make_texture(GL_TEXTURE_2D, GL_R32F, (width_ + 1) / 2, (height_ + 1) / 2);
-  const Program& upsample = program("upsample", "#define BILATERAL\n" + upsample_defines() + (mark ? "#define MARK\n" : "") +
+  if (flag_blocks && !failed_blocks_)
+    failed_blocks_ = make_texture(GL_TEXTURE_2D, GL_R32F, (width_ + 1) / 2, (height_ + 1) / 2);
+  const Program& upsample = program("upsample", "#define BILATERAL\n" + upsample_defines() +
+                                                    (mark ? "#define MARK\n" : "") +
                                                     (flag_blocks ? "#define FLAG_BLOCKS\n" : ""));
   glUseProgram(upsample.id());
   set_uniform(upsample, "light_images", upload_light_images(frame));
@@ -157,6 +166,11 @@ bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, Recom
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, light_images_binding, light_images_.id());
   dispatch_pixels((width_ + 1) / 2, (height_ + 1) / 2);  // 2×2 pixels an invocation
   count_groups(failed_list_);
+}
+
+// The frame on the grid of the pixels to recompute: the failed ones, or with
+// a halo those around them too (list_halo).
+void ReducedResolution::use_recompute_grid(SceneFrame& frame, RecomputeGrid grid) {
   if (grid.halo > 0) list_halo(grid);
   const Buffer& list = grid.halo > 0 ? halo_list_ : failed_list_;
   if (grid.marked)
@@ -164,7 +178,6 @@ bool ReducedResolution::upsample(SceneFrame& frame, const Texture& target, Recom
   else
     frame.use_gbuffer_grid(&list);
   frame.bind();
-  return true;
 }
 
 // The pixels to recompute where the method's result reads a halo around each

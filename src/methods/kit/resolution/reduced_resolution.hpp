@@ -66,6 +66,8 @@ public:
 private:
   void allocate(const SceneFrame& frame);
   int upload_light_images(const SceneFrame& frame);
+  void bilateral_upsample(const SceneFrame& frame, RecomputeGrid grid);
+  void use_recompute_grid(SceneFrame& frame, RecomputeGrid grid);
   void list_halo(RecomputeGrid grid);
   std::string upsample_defines() const;
 
