@@ -23,8 +23,11 @@ constexpr GLsizeiptr list_header = 4 * sizeof(GLuint);  // pixel_list.glsl's lis
 
 // Pixels within this many coarse pixels of a light's image are recomputed:
 // linear interpolation of L_air ∝ 1/h over a coarse pixel of D pixels errs by
-// about (D/2h)², 1 % at h = 5·D (docs/decisions.md "Reduced resolution").
-constexpr float near_light_coarse_pixels = 8.0f;
+// about (D/2h)², 1 % at h = 5·D (docs/decisions.md "Reduced resolution");
+// and within at least as many pixels as at 1/4, where a gobo's stripes,
+// converging on the light, are finer than a coarse pixel whatever its size
+// ("Reduced resolution's second pass").
+constexpr float near_light_coarse_pixels = 8.0f, near_light_min_pixels = 32.0f;
 
 // The window coordinates (GL, pixels) of each point and spot light in front
 // of the camera: view_ray.glsl's window_of on the CPU.
@@ -160,7 +163,7 @@ void ReducedResolution::bilateral_upsample(const SceneFrame& frame, RecomputeGri
                                                     (flag_blocks ? "#define FLAG_BLOCKS\n" : ""));
   glUseProgram(upsample.id());
   set_uniform(upsample, "light_images", upload_light_images(frame));
-  set_uniform(upsample, "near_light", near_light_coarse_pixels * settings_.divisor);
+  set_uniform(upsample, "near_light", std::max(near_light_coarse_pixels * settings_.divisor, near_light_min_pixels));
   if (mark) glBindImageTexture(1, failed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   if (flag_blocks) glBindImageTexture(2, failed_blocks_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, light_images_binding, light_images_.id());
