@@ -12,7 +12,7 @@ readonly
 #endif
 layout(std430, binding = BINDING_PIXEL_LIST) buffer PixelList {
   uvec4 list_groups;  // x, y, z workgroups (list_groups.comp.glsl); w the pixels listed
-  uint listed[];      // x | y << 16
+  uint listed[];      // x | y << 16: a texture is far narrower than 65536 pixels
 };
 
 #ifndef PIXEL_LIST_READONLY
