@@ -38,18 +38,30 @@ TEST(EquiangularSteps, IntegrateInverseSquareExactly) {
   }
 }
 
+// A ray, a light up to 2 m off it and an interval [a, b] on it, for the twins.
+struct RandomSegment {
+  glm::vec3 eye, dir, light;
+  float a, b;
+};
+
+RandomSegment random_segment(std::mt19937& rng) {
+  RandomSegment g;
+  g.eye = glm::vec3(uniform(rng, -5, 5), uniform(rng, -5, 5), uniform(rng, -5, 5));
+  g.dir = glm::normalize(glm::vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)));
+  g.light = g.eye + uniform(rng, 0, 10) * g.dir + glm::vec3(uniform(rng, -2, 2), uniform(rng, -2, 2), uniform(rng, -2, 2));
+  g.a = uniform(rng, 0, 5);
+  g.b = g.a + uniform(rng, 0.1f, 20);
+  return g;
+}
+
 // GLSL and C++ place the same samples with the same weights (float against double).
 TEST(OpticsTwin, EquiangularSegmentAndSample) {
   std::mt19937 rng(11);
   std::vector<glm::vec4> in;
   for (int c = 0; c < 4000; ++c) {
-    const glm::vec3 eye(uniform(rng, -5, 5), uniform(rng, -5, 5), uniform(rng, -5, 5));
-    const glm::vec3 dir = glm::normalize(glm::vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)));
-    const glm::vec3 light = eye + uniform(rng, 0, 10) * dir + glm::vec3(uniform(rng, -2, 2), uniform(rng, -2, 2),
-                                                                          uniform(rng, -2, 2));
-    const float a = uniform(rng, 0, 5), b = a + uniform(rng, 0.1f, 20);
+    const RandomSegment g = random_segment(rng);
     const int n = 1 + c % 64;
-    in.insert(in.end(), {glm::vec4(eye, a), glm::vec4(dir, b), glm::vec4(light, (c % n + 0.5f) / n),
+    in.insert(in.end(), {glm::vec4(g.eye, g.a), glm::vec4(g.dir, g.b), glm::vec4(g.light, (c % n + 0.5f) / n),
                          glm::vec4(float(n), c % 5 == 0 ? 1.0f : 0.0f, 0.0f, 0.0f)});
   }
   const auto out = run_twin("equiangular.comp.glsl", in, 4, 1);
@@ -81,15 +93,11 @@ TEST(OpticsTwin, EquiangularWalkMatchesTheDirectSample) {
   std::vector<glm::vec4> in;
   std::vector<std::pair<double, int>> u_n;  // the sample's u and n, for the C++ side
   for (int c = 0; c < 4000; ++c) {
-    const glm::vec3 eye(uniform(rng, -5, 5), uniform(rng, -5, 5), uniform(rng, -5, 5));
-    const glm::vec3 dir = glm::normalize(glm::vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)));
-    const glm::vec3 light = eye + uniform(rng, 0, 10) * dir + glm::vec3(uniform(rng, -2, 2), uniform(rng, -2, 2),
-                                                                          uniform(rng, -2, 2));
-    const float a = uniform(rng, 0, 5), b = a + uniform(rng, 0.1f, 20);
+    const RandomSegment g = random_segment(rng);
     const int stride = 1 + c % 64, steps = 1 + (c / 64) % 64, n = stride * steps;  // k < steps: inside (0, 1)
     const int k = c % steps;
     const float offset = uniform(rng, 0.0f, 1.0f);
-    in.insert(in.end(), {glm::vec4(eye, a), glm::vec4(dir, b), glm::vec4(light, offset),
+    in.insert(in.end(), {glm::vec4(g.eye, g.a), glm::vec4(g.dir, g.b), glm::vec4(g.light, offset),
                          glm::vec4(float(n), float(stride), float(k), 0.0f)});
     u_n.emplace_back((k * stride + offset) / n, n);
   }
