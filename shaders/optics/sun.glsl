@@ -78,7 +78,9 @@ float sun_tan_xi(float e, float r0, float r) {
 // taken in w = tan ξ (dw below), not as half the angle the segment subtends (the C++).
 // r0 is clamped at MIN_LIGHT_DISTANCE, so a light on the ray stays finite (the
 // C++ clamps r instead: the two differ only when the light is within 1 µm of the ray).
-float sun_segment(float sigma_s, float sigma_t, float I0, float xs, float r0, float d) {
+// depth: an optical depth before the segment (the eye's leg to its start), whose
+// transmittance joins the light leg's in one exp.
+float sun_segment(float sigma_s, float sigma_t, float I0, float xs, float r0, float d, float depth) {
   if (!(d > 0.0)) return 0.0;
   r0 = max(r0, MIN_LIGHT_DISTANCE);
   float d_lv = length(vec2(xs, r0)), r_d = length(vec2(d - xs, r0));
@@ -88,21 +90,22 @@ float sun_segment(float sigma_s, float sigma_t, float I0, float xs, float r0, fl
   // a sum of positive terms, with no cancellation for short segments or ends behind the foot.
   float dw = d * (w_lo + w_hi) / (d_lv + r_d);
   float A0 = sigma_s * I0 / (2.0 * PI * r0);  // Kingston's A0, e^{-σt d_lv cos γ} moved inside
-  return A0 * exp(-sigma_t * d_lv) * sun_angular(sigma_t * r0, w_lo, dw);
+  return A0 * exp(-(sigma_t * d_lv + depth)) * sun_angular(sigma_t * r0, w_lo, dw);
 }
 
 // optics::sun_airlight(σs, σt, I0, d_lv, γ, d_vp): d_lv the eye–light distance,
 // gamma the angle between the view ray and the direction to the light, d_vp the
 // length of the view segment.
 float sun_airlight(float sigma_s, float sigma_t, float I0, float d_lv, float gamma, float d_vp) {
-  return sun_segment(sigma_s, sigma_t, I0, d_lv * cos(gamma), d_lv * abs(sin(gamma)), d_vp);
+  return sun_segment(sigma_s, sigma_t, I0, d_lv * cos(gamma), d_lv * abs(sin(gamma)), d_vp, 0.0);
 }
 
 // The same for a ray (origin, unit dir), a light position and the segment [0, d]
-// (optics::sun_airlight's vector form): r0 = |Δ - xs·dir| (no cancellation, unlike
-// sqrt(|Δ|² - xs²) of Nilsson eq. 2.16).
-float sun_airlight_ray(float sigma_s, float sigma_t, float I0, vec3 origin, vec3 dir, vec3 light, float d) {
+// (optics::sun_airlight's vector form), times e^{-depth}: r0 = |Δ - xs·dir| (no
+// cancellation, unlike sqrt(|Δ|² - xs²) of Nilsson eq. 2.16).
+float sun_airlight_ray(float sigma_s, float sigma_t, float I0, vec3 origin, vec3 dir, vec3 light, float d,
+                       float depth) {
   vec3 delta = light - origin;
   float xs = dot(delta, dir);
-  return sun_segment(sigma_s, sigma_t, I0, xs, length(delta - xs * dir), d);
+  return sun_segment(sigma_s, sigma_t, I0, xs, length(delta - xs * dir), d, depth);
 }
