@@ -37,9 +37,10 @@ float sun_table_F(sampler2D table, float u, float tan_v, float v) {
 }
 
 // optics::sun_airlight_table: Kingston eq. 38 with F from the table where the
-// difference is well-conditioned, else sun.glsl's in-shader integral.
+// difference is well-conditioned, else sun.glsl's in-shader integral; times
+// e^{-depth} as sun_airlight_ray.
 float sun_airlight_table(sampler2D table, float sigma_s, float sigma_t, float I0, vec3 origin, vec3 dir,
-                         vec3 light, float d) {
+                         vec3 light, float d, float depth) {
   vec3 delta = light - origin;
   float xs = dot(delta, dir);
   float r0 = max(length(delta - xs * dir), MIN_LIGHT_DISTANCE);
@@ -47,8 +48,8 @@ float sun_airlight_table(sampler2D table, float sigma_s, float sigma_t, float I0
   float u = sigma_t * r0;
   float F0 = sun_table_F(table, u, w0, atan_unit_any(w0)), F1 = sun_table_F(table, u, w1, atan_unit_any(w1));
   if (!(d > 0.0) || -sigma_t * xs > SUN_TABLE_MAX_GAIN || !(F1 + F0 <= SUN_TABLE_MAX_CONDITION * (F1 - F0)))
-    return sun_segment(sigma_s, sigma_t, I0, xs, r0, d);
-  return sigma_s * I0 / (2.0 * PI * r0) * exp(-sigma_t * xs) * (F1 - F0);
+    return sun_segment(sigma_s, sigma_t, I0, xs, r0, d, depth);
+  return sigma_s * I0 / (2.0 * PI * r0) * exp(-(sigma_t * xs + depth)) * (F1 - F0);
 }
 #endif
 

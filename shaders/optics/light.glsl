@@ -58,17 +58,23 @@ vec2 double_cone_roots(vec3 p, vec3 dir, vec3 axis, float sn, float cs) {
 // Whether the direction v from the apex lies inside the cone of half-angle α
 // (sn, cs = sin α, cos α): |a×v|·cos α − (a·v)·sin α = |v|·sin(angle − α), both
 // angles in [0, π], so it is <= 0 exactly where angle <= α — spot_cone's hard
-// cut without its atan2 (docs/decisions.md, "Γ's cost").
-bool inside_cone(vec3 axis, float sn, float cs, vec3 v) { return length(cross(axis, v)) * cs <= dot(axis, v) * sn; }
+// cut without its atan2 (docs/decisions.md, "Γ's cost"). x·|x| increases with
+// x, so both sides are compared as signed squares, without the root of |a×v|.
+bool inside_cone(vec3 axis, float sn, float cs, vec3 v) {
+  vec3 across = cross(axis, v);
+  float along = dot(axis, v);
+  return dot(across, across) * cs * abs(cs) <= along * abs(along) * sn * sn;
+}
 
-ConeIntervals cone_intervals(vec3 apex, vec3 axis, float half_angle, vec3 origin, vec3 dir, float t0, float t1) {
+// The cone given by sin and cos of its half-angle (sin_cos), for a caller that has them.
+ConeIntervals cone_intervals(vec3 apex, vec3 axis, vec2 sin_cos, vec3 origin, vec3 dir, float t0, float t1) {
   ConeIntervals lit = ConeIntervals(0, vec2[2](vec2(0.0), vec2(0.0)));
   if (!(t1 > t0)) return lit;
   // Roots about the foot of the perpendicular from the apex: their rounding
   // scales with the line's distance from the apex, not the origin's.
   vec3 w = origin - apex;
   float foot = -dot(w, dir);
-  float sn = sin(half_angle), cs = cos(half_angle);
+  float sn = sin_cos.x, cs = sin_cos.y;
   vec2 r = clamp(foot + double_cone_roots(w + foot * dir, dir, axis, sn, cs), t0, t1);
   float lo = min(r.x, r.y), hi = max(r.x, r.y);
   // Between consecutive bounds t0, lo, hi, t1 the angle never crosses α (the
@@ -85,6 +91,10 @@ ConeIntervals cone_intervals(vec3 apex, vec3 axis, float half_angle, vec3 origin
   if (lit.count > 0) lit.piece[0] = vec2(lit0 ? t0 : (lit1 ? lo : hi), gap ? lo : (lit2 ? t1 : (lit1 ? hi : lo)));
   if (gap) lit.piece[1] = vec2(hi, t1);
   return lit;
+}
+
+ConeIntervals cone_intervals(vec3 apex, vec3 axis, float half_angle, vec3 origin, vec3 dir, float t0, float t1) {
+  return cone_intervals(apex, axis, vec2(sin(half_angle), cos(half_angle)), origin, dir, t0, t1);
 }
 
 // optics::gobo_uv: u, v in [0, 1] over the square circumscribing the cone, v = 1

@@ -49,10 +49,3 @@ float log1p_nonneg(float x) {
 float expm1_nonneg(float x) {
   return x < 1e-2 ? x * (1.0 + x * (0.5 + x * (1.0 / 6.0 + x / 24.0))) : exp(x) - 1.0;
 }
-
-// sqrt(1 + w²) = 1/cos(atan w) without overflow for w up to the float maximum.
-float sec_of_atan(float w) {
-  w = abs(w);
-  bool big = w > 1.0;  // one square root, its argument and factor by selects
-  return (big ? w : 1.0) * sqrt(1.0 + (big ? 1.0 / (w * w) : w * w));
-}

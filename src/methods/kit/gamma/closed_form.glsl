@@ -30,25 +30,25 @@ float component_phase(MediumComponent m, float c) { return m.phase < 0 ? medium_
 bool isotropic_component(MediumComponent m) { return m.phase < 0 ? MEDIUM_ISOTROPIC != 0 : VOLUME_ISOTROPIC(m.phase); }
 
 // Sun et al. (Kingston eqs. 36-40) over [a, b] per channel, times the eye's
-// extinction to a. Γ is linear in the intensity: in grey media one channel with
-// I = 1, times the light's colour, gives all three (GREY_MEDIA covers the
-// volumes too, so a component's σs and σt, sums of grey σ, are grey).
-float sun_channel(int c, MediumComponent m, vec3 origin, vec3 dir, vec3 light, float I, float length) {
+// extinction to a (in the closed form's exp). Γ is linear in the intensity: in
+// grey media one channel with I = 1, times the light's colour, gives all three
+// (GREY_MEDIA covers the volumes too, so a component's σs and σt, sums of grey σ, are grey).
+float sun_channel(int c, MediumComponent m, vec3 eye, vec3 dir, vec3 light, float I, float a, float b) {
+  vec3 origin = eye + a * dir;
+  float depth = m.sigma_t[c] * a;
 #ifdef SUN_F_TABLE
-  return sun_airlight_table(sun_table, m.sigma_s[c], m.sigma_t[c], I, origin, dir, light, length);
+  return sun_airlight_table(sun_table, m.sigma_s[c], m.sigma_t[c], I, origin, dir, light, b - a, depth);
 #else
-  return sun_airlight_ray(m.sigma_s[c], m.sigma_t[c], I, origin, dir, light, length);
+  return sun_airlight_ray(m.sigma_s[c], m.sigma_t[c], I, origin, dir, light, b - a, depth);
 #endif
 }
 
 vec3 sun_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b) {
-  vec3 origin = eye + a * dir;
 #if GREY_MEDIA
-  return exp(-m.sigma_t.r * a) * sun_channel(0, m, origin, dir, LIGHT(i).position, 1.0, b - a) * LIGHT(i).color;
+  return sun_channel(0, m, eye, dir, LIGHT(i).position, 1.0, a, b) * LIGHT(i).color;
 #else
   vec3 sum;
-  for (int c = 0; c < 3; ++c)
-    sum[c] = exp(-m.sigma_t[c] * a) * sun_channel(c, m, origin, dir, LIGHT(i).position, LIGHT(i).color[c], b - a);
+  for (int c = 0; c < 3; ++c) sum[c] = sun_channel(c, m, eye, dir, LIGHT(i).position, LIGHT(i).color[c], a, b);
   return sum;
 #endif
 }
@@ -126,6 +126,16 @@ vec3 hard_spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, ConeIntervals
   return sum;
 }
 
+// sin and cos of spot i's cone from its tan_cone by one root, where the frame
+// gives it (cones below 90°), instead of a sin and a cos per pixel. The test is
+// on the light's value, so all lanes take the same side and llvmpipe runs one.
+vec2 spot_sin_cos(int i) {
+  float t = LIGHT(i).tan_cone;
+  if (!(t > 0.0)) return vec2(sin(LIGHT(i).cone), cos(LIGHT(i).cone));
+  float c = 1.0 / sqrt(1.0 + t * t);
+  return vec2(t * c, c);
+}
+
 // A spot: its cone_intervals (hard cut at the cone), each cut again at the
 // inner cone's ends under a smooth edge (gamma.cpp spot_gamma): those pieces
 // lie inside the outer one, in ascending order. Their ends are gathered first
@@ -137,7 +147,7 @@ vec3 hard_spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, ConeIntervals
 vec3 spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1) {
   vec3 apex = LIGHT(i).position, axis = LIGHT(i).direction;
   float cone = LIGHT(i).cone, inner = cone - LIGHT(i).edge;
-  ConeIntervals lit = cone_intervals(apex, axis, cone, eye, dir, t0, t1);
+  ConeIntervals lit = cone_intervals(apex, axis, spot_sin_cos(i), eye, dir, t0, t1);
   if (!light_edges[i]) return hard_spot_gamma(i, m, eye, dir, lit);  // a constant: folds away
   bool cut = inner > 0.0;
   float ends[12];

@@ -6,7 +6,7 @@
 #include "optics/sun.glsl"
 void evaluate(uint i) {
   vec4 medium = arg(i, 0), angles = arg(i, 1), origin = arg(i, 2);
-  float ray = sun_airlight_ray(medium.x, medium.y, medium.z, origin.xyz, arg(i, 3).xyz, arg(i, 4).xyz, origin.w);
+  float ray = sun_airlight_ray(medium.x, medium.y, medium.z, origin.xyz, arg(i, 3).xyz, arg(i, 4).xyz, origin.w, 0.0);
   result(i, 0, vec4(sun_F(angles.z, angles.w),
                     sun_airlight(medium.x, medium.y, medium.z, medium.w, angles.x, angles.y), ray, 0.0));
 }
