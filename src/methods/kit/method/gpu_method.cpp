@@ -35,16 +35,16 @@ namespace {
 // distance (4); with bilateral upsampling, on the full grid, at most: the
 // recomputation's airlight (16), the failed pixels' list (4), and either
 // their distance (4, for a method that draws on its grid) or, for a method
-// that recomputes a halo, a flag a 2×2 block (1), the halo's list (4) and
-// distance (4); two lists' headers of 16.
+// that recomputes a halo, the halo's list (4) and distance (4) and a flag (4)
+// a 2×2 block; two lists' headers of 16.
 std::vector<MemoryNeed> resolution_needs(const Settings& settings, int width, int height) {
   const ResolutionSettings r = ResolutionSettings::from(settings);
   if (r.divisor == 1) return {};
   const double coarse = std::ceil(double(width) / r.divisor) * std::ceil(double(height) / r.divisor);
-  const double full = double(width) * height;
+  const double full = double(width) * height, blocks = std::ceil(width / 2.0) * std::ceil(height / 2.0);
   return {{"scale", "the coarse grid's airlight and distance", 20.0 * coarse, 0.0, 16.0 * coarse},
           {"upsample", "at most: the recomputed pixels' distance, list and airlight on the full grid, and a halo's",
-           r.bilateral ? 29.0 * full + 32.0 : 0.0, 0.0, r.bilateral ? 16.0 * full : 0.0}};
+           r.bilateral ? 28.0 * full + 4.0 * blocks + 32.0 : 0.0, 0.0, r.bilateral ? 16.0 * full : 0.0}};
 }
 
 }  // namespace
