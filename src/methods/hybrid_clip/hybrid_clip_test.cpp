@@ -3,6 +3,7 @@
 // inner volumes prove part of the lit region unlit.
 #include "core/metrics.hpp"
 #include "core/test_paths.hpp"
+#include "gpu/program.hpp"
 #include "methods/kit/testing/test_support.hpp"
 
 #include <airlight/method.hpp>
@@ -101,6 +102,21 @@ TEST(HybridClip, NeverShadesTheProvedUnlitVolume) {
   // it, the plane regions' edges (partly covered quads), and one full-screen
   // pass for the slabs the surface cuts.
   EXPECT_LT(stat(clip, "fragments"), 0.5 * stat(planes, "fragments"));
+}
+
+// The stage's five spots are of two structures (three plain with soft edges,
+// two with gobos): its first frame compiles the programs of those two alone,
+// one set shared by each structure's lights (kit::SceneFrame::representative).
+TEST(HybridClip, LightsOfOneStructureShareTheirPrograms) {
+  const Scene stage = builtin_scene("stage");
+  Scene two = stage;
+  two.lights.resize(2);  // a plain spot and a gobo spot
+  auto programs = [](const Scene& scene) {
+    gpu::clear_program_cache();
+    render_case("hybrid_clip", scene, {});
+    return gpu::cached_program_count();
+  };
+  EXPECT_EQ(programs(stage), programs(two));
 }
 
 }  // namespace

@@ -47,11 +47,21 @@ const bool light_gobos[] = LIGHT_GOBOS;     // whether a light samples a gobo
 const bool light_beams[] = LIGHT_BEAMS;     // a directional light bounded to its beam
 const bool light_edges[] = LIGHT_EDGES;     // a spot with a smooth edge (edge_deg > 0)
 
+// A program that draws one light at a time may be shared by every light of
+// one structure (kit::SceneFrame::representative): compiled for the index
+// SHARED_LIGHT, it reads the data of light `shared_light` there.
+#ifdef SHARED_LIGHT
+uniform int shared_light;
+#define LIGHT_DATA(i) ((i) == SHARED_LIGHT ? shared_light : (i))
+#else
+#define LIGHT_DATA(i) (i)
+#endif
+
 #ifdef SCENE_IN_REGISTERS
 SceneLight scene_lights[LIGHT_COUNT > 0 ? LIGHT_COUNT : 1];
 SceneVolume scene_volumes[VOLUME_COUNT > 0 ? VOLUME_COUNT : 1];
 SceneLobe scene_lobes[LOBE_COUNT > 0 ? LOBE_COUNT : 1];
-#define LOAD_LIGHT(i) scene_lights[i] = lights[i];
+#define LOAD_LIGHT(i) scene_lights[i] = lights[LIGHT_DATA(i)];
 #define LOAD_VOLUME(v) scene_volumes[v] = volumes[v];
 #define LOAD_LOBE(k) scene_lobes[k] = lobes[k];
 void load_scene() { FOR_EACH_LIGHT(LOAD_LIGHT) FOR_EACH_VOLUME(LOAD_VOLUME) FOR_EACH_LOBE(LOAD_LOBE) }
@@ -61,13 +71,13 @@ void load_scene() { FOR_EACH_LIGHT(LOAD_LIGHT) FOR_EACH_VOLUME(LOAD_VOLUME) FOR_
 // No light: nothing reads one, but the helpers that would still compile, and
 // reading the never-written register copy is a compiler warning that the GL
 // debug output reports as an error (docs/decisions.md "No lights").
-#define LIGHT(i) lights[i]
+#define LIGHT(i) lights[LIGHT_DATA(i)]
 #endif
 #define VOLUME(v) scene_volumes[v]
 #define LOBE(k) scene_lobes[k]
 #else
 void load_scene() {}
-#define LIGHT(i) lights[i]
+#define LIGHT(i) lights[LIGHT_DATA(i)]
 #define VOLUME(v) volumes[v]
 #define LOBE(k) lobes[k]
 #endif

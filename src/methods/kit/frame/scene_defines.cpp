@@ -1,5 +1,6 @@
 #include "methods/kit/frame/scene_defines.hpp"
 
+#include <array>
 #include <type_traits>
 
 namespace airlight::kit {
@@ -51,18 +52,35 @@ bool isotropic(const std::vector<SceneLobe>& lobes, int first, int count) {
 
 bool grey(const glm::vec3& c) { return c.r == c.g && c.g == c.b; }
 
+// What structure_defines makes a constant of a light: its type, smooth edge,
+// shadow kind, gobo and beam.
+std::array<int, 5> structure(const SceneLight& l) {
+  return {l.type, l.edge > 0.0f, l.shadow_kind, l.gobo_layer >= 0, l.beam_length > 0.0f};
+}
+
 }  // namespace
+
+std::vector<int> structure_representatives(const std::vector<SceneLight>& lights) {
+  std::vector<int> first(lights.size());
+  for (size_t k = 0; k < lights.size(); ++k) {
+    first[k] = static_cast<int>(k);
+    for (size_t j = 0; j < k && first[k] == static_cast<int>(k); ++j)
+      if (structure(lights[j]) == structure(lights[k])) first[k] = static_cast<int>(j);
+  }
+  return first;
+}
 
 std::string structure_defines(const std::vector<SceneLight>& lights, const std::vector<SceneVolume>& volumes,
                               const std::vector<SceneLobe>& lobes, int medium_lobes, const FrameInputs& in) {
   std::vector<int> types, shadows;
   std::vector<bool> gobos, beams, edges;
   for (const SceneLight& l : lights) {
-    types.push_back(l.type);
-    edges.push_back(l.edge > 0.0f);
-    shadows.push_back(l.shadow_kind);
-    gobos.push_back(l.gobo_layer >= 0);
-    beams.push_back(l.beam_length > 0.0f);
+    const std::array<int, 5> s = structure(l);
+    types.push_back(s[0]);
+    edges.push_back(s[1]);
+    shadows.push_back(s[2]);
+    gobos.push_back(s[3]);
+    beams.push_back(s[4]);
   }
   bool grey_media = grey(in.medium.sigma_s) && grey(in.medium.sigma_t());
   for (const SceneVolume& v : volumes) grey_media = grey_media && grey(v.sigma_s) && grey(v.sigma_t);

@@ -15,4 +15,9 @@ std::string structure_defines(const std::vector<shader::SceneLight>& lights,
                               const std::vector<shader::SceneVolume>& volumes,
                               const std::vector<shader::SceneLobe>& lobes, int medium_lobes, const FrameInputs& in);
 
+// Per light, the first light of the same structure (the constants
+// structure_defines makes of it): a program compiled for that one light
+// serves every light of its structure (scene.glsl, SHARED_LIGHT).
+std::vector<int> structure_representatives(const std::vector<shader::SceneLight>& lights);
+
 }  // namespace airlight::kit

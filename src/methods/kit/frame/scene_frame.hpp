@@ -72,6 +72,10 @@ public:
   // (positions, colours, σ, g) stays in the buffers: changing it recompiles
   // nothing; changing the structure compiles each program once more.
   const std::string& defines() const { return defines_; }
+  // The first light whose structure (its constants in defines()) is light
+  // `light`'s: a program compiled for it with SHARED_LIGHT (scene.glsl) draws
+  // every light of that structure.
+  int representative(int light) const { return representatives_[light]; }
 
   // The pixel grid a method renders on (docs/design.md §3, reduced resolution):
   // the G-buffer's after render(), or one that methods/kit/resolution puts in
@@ -150,6 +154,7 @@ private:
   Scene scene_;  // as prepared, meshes in object space
   FrameInputs inputs_;
   std::string defines_;
+  std::vector<int> representatives_;  // per light (representative())
   std::vector<ShadowDraw> shadow_draws_;
   std::vector<int> shadow_kinds_;  // per light
   ShadowLayout shadow_layout_;

@@ -181,6 +181,7 @@ void SceneFrame::upload_inputs(const FrameSettings& settings, const EngineFrame*
   const std::vector<SceneLight> lights = upload_lights(engine, settings.shadow_resolution, shadows);
   defines_ = binding_defines() + structure_defines(lights, media.volumes, media.lobes,
                                                    static_cast<int>(inputs_.medium.phase.lobes.size()), inputs_);
+  representatives_ = structure_representatives(lights);
   update_frame_block(settings);
 }
 

@@ -157,11 +157,14 @@ void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-// Light `light`'s program for one part of its planes: its index and the
+// The program for one part of the planes of light `light`'s structure: the
+// first light of that structure as the constant index, shared with the
+// others (the light drawn is the uniform shared_light: scene.glsl), and the
 // settings as constants (planes.frag.glsl).
-std::string PlanePass::defines(int light, Part part) const {
-  std::string d = "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n#define PLANE_LIGHT " +
-                  std::to_string(light) + "\n";
+std::string PlanePass::defines(const SceneFrame& frame, int light, Part part) const {
+  const std::string index = std::to_string(frame.representative(light));
+  std::string d = "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n#define PLANE_LIGHT " + index +
+                  "\n#define SHARED_LIGHT " + index + "\n";
   if (settings_.lattice > 0) d += "#define LATTICE_XI\n";
   if (settings_.jitter != Jitter::none) d += "#define JITTER\n";
   if (settings_.lit_sampling) d += "#define LIT_SAMPLING\n";
@@ -220,8 +223,9 @@ void PlanePass::draw(const SceneFrame& frame, int light, Part part, const Slabs&
                                                  : "methods/kit/planes/piece_planes.vert.glsl";
   const gpu::Program& program = gpu::cached_program(
       {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, "methods/kit/planes/planes.frag.glsl"}},
-      frame.defines() + defines(light, part));
+      frame.defines() + defines(frame, light, part));
   glUseProgram(program.id());
+  gpu::set_uniform(program, "shared_light", light);
   gpu::set_uniform(program, "dz", s.dz);
   if (part == Part::cut_slabs) {
     gpu::set_uniform(program, "plane_count", s.count);

@@ -73,7 +73,7 @@ private:
   Slabs slabs(const LightBounds& volume) const;
   float reach(const Slabs& s) const;
   enum class Part { lattice, fully_lit, uncertain, cut_slabs };
-  std::string defines(int light, Part part) const;
+  std::string defines(const SceneFrame& frame, int light, Part part) const;
   void draw_light(const SceneFrame& frame, int light, const LightBounds& volume);
   void draw_pieces(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip);
   void draw(const SceneFrame& frame, int light, Part part, const Slabs& s, const std::vector<glm::vec4>& clip);

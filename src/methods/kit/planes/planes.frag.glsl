@@ -9,10 +9,12 @@
 // pixel's jitter offset), so a surface inside a slab gets no step of up to dz
 // in its fog and a shaft's edge no step across it.
 //
-// Specialized by PlanePass, one program per light and part: PLANE_LIGHT (the
-// light's index), LATTICE_XI (ξ from the lattice), JITTER (per-pixel offsets of
-// the samples within their slabs, Dobashi §7), LIT_SAMPLING (the slab's lit
-// piece, else the slab as Dobashi); for a cut plane's pieces (plane_pass.cpp
+// Specialized by PlanePass, one program per light structure and part:
+// PLANE_LIGHT (the index of the structure's first light, whose constants the
+// program takes; it draws light shared_light: scene.glsl SHARED_LIGHT),
+// LATTICE_XI (ξ from the lattice), JITTER (per-pixel offsets of the samples
+// within their slabs, Dobashi §7), LIT_SAMPLING (the slab's lit piece, else
+// the slab as Dobashi); for a cut plane's pieces (plane_pass.cpp
 // draw_pieces) FULL_SLABS (only slabs wholly in front of the surface),
 // FULLY_LIT (no shadow test) or FULLY_LIT_GAMMA (Γ), and CUT_SLABS (a
 // full-screen pass over the slabs the surface cuts).
