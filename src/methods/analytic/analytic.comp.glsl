@@ -14,6 +14,9 @@ void main() {
   FRAME_PIXEL_OR_RETURN(pixel);
   PixelRay ray = load_pixel_ray(pixel);
   vec3 sum = vec3(0.0);
+  // One copy of Γ per light, not per structure (FOR_EACH_LIGHT_SHARED): on
+  // llvmpipe the copies overlap and a loop over stage's spots ran slower,
+  // while Γ alone compiles fast (docs/decisions.md, "The first frame").
 #define ADD_GAMMA(i) sum += closed_form_airlight(i, frame.eye, ray.dir, 0.0, ray.d);
   FOR_EACH_LIGHT(ADD_GAMMA)
 #undef ADD_GAMMA

@@ -76,9 +76,9 @@ vec3 exact_parts_airlight(int i, vec3 dir, float front, float back, float d) {
 // Light i's part of the pixel's ray [0, d]: its samples of this dispatch over
 // [front, back], and with `exact_parts` the stretches before and after.
 vec3 light_part(int i, ivec2 pixel, vec3 dir, float d, SampleRange r, float offset, bool exact_parts) {
-  float front = uintBitsToFloat(imageLoad(bounds, ivec3(pixel, 2 * i)).r);
-  float back = uintBitsToFloat(imageLoad(bounds, ivec3(pixel, 2 * i + 1)).r);
-  if (shell_eye[i] == 0) {
+  float front = uintBitsToFloat(imageLoad(bounds, ivec3(pixel, 2 * LIGHT_DATA(i))).r);
+  float back = uintBitsToFloat(imageLoad(bounds, ivec3(pixel, 2 * LIGHT_DATA(i) + 1)).r);
+  if (shell_eye[LIGHT_DATA(i)] == 0) {
     front = 0.0;
     if (!(back > 0.0)) back = d;  // no crossing found (a closed shell always has one): all of it
   }
@@ -98,7 +98,7 @@ void main() {
   float offset = step_offset(pixel);
   vec3 sum = vec3(0.0);
 #define ADD_LIGHT(i) sum += light_part(i, pixel, ray.dir, ray.d, range, offset, exact_parts);
-  FOR_EACH_LIGHT(ADD_LIGHT)
+  FOR_EACH_LIGHT_SHARED(ADD_LIGHT)
 #undef ADD_LIGHT
   if (!exact_parts) sum += imageLoad(airlight_out, pixel).rgb;
   imageStore(airlight_out, pixel, vec4(sum, 1.0));

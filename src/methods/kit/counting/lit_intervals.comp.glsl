@@ -36,9 +36,9 @@ uniform int eye_plane_weights[MAX_EYE_PLANES];
 uniform int eye_plane_count;
 
 int count_at_eye(int i, vec3 dir) {
-  int count = eye_counts[i];
+  int count = eye_counts[LIGHT_DATA(i)];
   for (int k = 0; k < eye_plane_count; ++k)
-    if (int(eye_planes[k].w) == i && dot(eye_planes[k].xyz, dir) > 0.0) count += eye_plane_weights[k];
+    if (int(eye_planes[k].w) == LIGHT_DATA(i) && dot(eye_planes[k].xyz, dir) > 0.0) count += eye_plane_weights[k];
   return count;
 }
 
@@ -98,7 +98,7 @@ uint sorted(uint head) {
 uint next_event(int i, uint node) {
   // Runtime bounds: the crossings along this ray.
   for (; node != END_OF_LIST; node = node_next(node))
-    if (crossing_light(nodes[3u * node + 1u]) == i) break;
+    if (crossing_light(nodes[3u * node + 1u]) == LIGHT_DATA(i)) break;
   return node;
 }
 
@@ -211,7 +211,7 @@ void main() {
   PixelRay ray = load_pixel_ray(pixel);
   cut_into_pieces(ray.dir, ray.d);
 #define ADD_LIGHT(i) light_airlight(i, list, ray.dir, ray.d, w);
-  FOR_EACH_LIGHT(ADD_LIGHT)
+  FOR_EACH_LIGHT_SHARED(ADD_LIGHT)
 #undef ADD_LIGHT
 #ifdef LOOP_LIMIT
   vec3 earlier = resume == 0 ? vec3(0.0) : imageLoad(airlight_out, pixel).rgb;  // earlier passes' sum

@@ -7,9 +7,10 @@
 // Specialized to the scene: binding points and the scene's structure come as
 // macros from kit::SceneFrame::defines() — LIGHT_COUNT, LIGHT_TYPES,
 // LIGHT_SHADOWS, LIGHT_GOBOS, LIGHT_BEAMS, VOLUME_COUNT, LIGHT_MODEL_TYPE,
-// GREY_MEDIA, MEDIUM_PHASE(c), VOLUME_PHASE(v, c), FOR_EACH_LIGHT(F) … — so
-// that with a constant light index every test of a light's kind folds away:
-// a generic shader pays for every branch it holds (docs/design.md §2).
+// GREY_MEDIA, MEDIUM_PHASE(c), VOLUME_PHASE(v, c), FOR_EACH_LIGHT(F),
+// FOR_EACH_LIGHT_SHARED(F) … — so that with a constant light index every test
+// of a light's kind folds away: a generic shader pays for every branch it
+// holds (docs/design.md §2).
 // A program that defines SCENE_IN_REGISTERS before including this file and
 // calls load_scene() first reads each light, volume and lobe from its buffer
 // once per invocation instead of at every use.
@@ -47,14 +48,22 @@ const bool light_gobos[] = LIGHT_GOBOS;     // whether a light samples a gobo
 const bool light_beams[] = LIGHT_BEAMS;     // a directional light bounded to its beam
 const bool light_edges[] = LIGHT_EDGES;     // a spot with a smooth edge (edge_deg > 0)
 
-// A program that draws one light at a time may be shared by every light of
-// one structure (kit::SceneFrame::representative): compiled for the index
-// SHARED_LIGHT, it reads the data of light `shared_light` there.
+// Code compiled for one light may serve every light of its structure
+// (kit::SceneFrame::representative): LIGHT_DATA(i) is the light whose data
+// light i's code reads (its index into the buffers and images the method
+// keeps per light).
+//  - A program that draws one light at a time, compiled for its structure's
+//    first light SHARED_LIGHT, reads light `shared_light` there.
+//  - FOR_EACH_LIGHT_SHARED(F) takes F(i) once per structure, i its first
+//    light, in a loop over the structure's lights, which swap_lights() turns
+//    through slot i: a scene of five spots of two kinds compiles two copies
+//    of F, not five.
+int light_data_index[] = LIGHT_IDENTITY;
 #ifdef SHARED_LIGHT
 uniform int shared_light;
 #define LIGHT_DATA(i) ((i) == SHARED_LIGHT ? shared_light : (i))
 #else
-#define LIGHT_DATA(i) (i)
+#define LIGHT_DATA(i) light_data_index[i]
 #endif
 
 #ifdef SCENE_IN_REGISTERS
@@ -81,6 +90,22 @@ void load_scene() {}
 #define VOLUME(v) volumes[v]
 #define LOBE(k) lobes[k]
 #endif
+
+// Swaps what lights a and b's code reads: FOR_EACH_LIGHT_SHARED turns its
+// lights through their structure's slot by swaps of constant indices, which
+// in registers are moves (a read of a light's buffer at an index that varies
+// is a load per SIMD lane on llvmpipe).
+void swap_lights(int a, int b) {
+  int index = light_data_index[a];
+  light_data_index[a] = light_data_index[b];
+  light_data_index[b] = index;
+#if defined(SCENE_IN_REGISTERS) && LIGHT_COUNT > 0
+  SceneLight light = scene_lights[a];
+  scene_lights[a] = scene_lights[b];
+  scene_lights[b] = light;
+#endif
+}
+LIGHT_GROUPS
 
 bool simplified_model() { return LIGHT_MODEL_TYPE == LIGHT_MODEL_SIMPLIFIED; }
 ivec2 frame_size() { return ivec2(frame.size); }

@@ -58,6 +58,34 @@ std::array<int, 5> structure(const SceneLight& l) {
   return {l.type, l.edge > 0.0f, l.shadow_kind, l.gobo_layer >= 0, l.beam_length > 0.0f};
 }
 
+// LIGHT_GROUPS declares the lights of each structure that several share,
+// ended by −1: light_group_<first>. FOR_EACH_LIGHT_SHARED(F) expands to F(i)
+// for a light alone in its structure, and for each group to a loop of F(first)
+// that turns the group's lights through slot `first` (scene.glsl swap_lights:
+// after n turns each is back in its own). The loop ends at the −1, a bound the
+// compiler does not count, so that it does not unroll it back into copies.
+std::string shared_light_loops(const std::vector<int>& representatives) {
+  std::string groups = "#define LIGHT_GROUPS", loops = "#define FOR_EACH_LIGHT_SHARED(F)";
+  for (size_t first = 0; first < representatives.size(); ++first) {
+    if (representatives[first] != static_cast<int>(first)) continue;
+    const std::string i = std::to_string(first), group = "light_group_" + i;
+    std::vector<int> members;
+    for (size_t k = first; k < representatives.size(); ++k)
+      if (representatives[k] == static_cast<int>(first)) members.push_back(static_cast<int>(k));
+    if (members.size() == 1) {
+      loops += " F(" + i + ")";
+      continue;
+    }
+    std::string turn;
+    for (size_t k = 1; k < members.size(); ++k)
+      turn += " swap_lights(" + std::to_string(members[k - 1]) + ", " + std::to_string(members[k]) + ");";
+    loops += " for (int k_ = 0; " + group + "[k_] >= 0; ++k_) { F(" + i + ")" + turn + " }";
+    members.push_back(-1);
+    groups += " const int " + group + "[] = " + glsl_array("int", members) + ";";
+  }
+  return groups + "\n" + loops + "\n";
+}
+
 }  // namespace
 
 std::vector<int> structure_representatives(const std::vector<SceneLight>& lights) {
@@ -95,6 +123,10 @@ std::string structure_defines(const std::vector<SceneLight>& lights, const std::
   d += "#define LIGHT_GOBOS " + glsl_array("bool", gobos) + "\n";
   d += "#define LIGHT_BEAMS " + glsl_array("bool", beams) + "\n";
   d += "#define LIGHT_EDGES " + glsl_array("bool", edges) + "\n";
+  std::vector<int> identity(lights.size());
+  for (size_t k = 0; k < lights.size(); ++k) identity[k] = static_cast<int>(k);
+  d += "#define LIGHT_IDENTITY " + glsl_array("int", identity) + "\n";
+  d += shared_light_loops(structure_representatives(lights));
   d += for_each("LIGHT", lights.size()) + for_each("VOLUME", volumes.size()) + for_each("LOBE", lobes.size());
   d += "#define MEDIUM_PHASE(c) " + phase_expression(lobes, 0, medium_lobes) + "\n";
   d += std::string("#define MEDIUM_ISOTROPIC ") + (isotropic(lobes, 0, medium_lobes) ? "1" : "0") + "\n";

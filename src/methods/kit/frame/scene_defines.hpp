@@ -2,7 +2,8 @@
 // The scene's structure as GLSL constants, for SceneFrame::defines() (see
 // scene_frame.hpp and docs/design.md §2): light count and kinds, volume count,
 // the phase function of constant lobe types, the light model, grey media, and
-// FOR_EACH_* macros that unroll loops over lights, volumes and lobes.
+// FOR_EACH_* macros that unroll loops over lights, volumes and lobes, and
+// FOR_EACH_LIGHT_SHARED, one copy per light structure.
 #include "methods/kit/frame/frame_data.hpp"
 
 #include <airlight/method.hpp>

@@ -36,8 +36,9 @@ struct SampleRange {
 };
 
 // ---- marching -----------------------------------------------------------------
-// Loops over lights are unrolled by FOR_EACH_LIGHT (SceneFrame::defines), so
-// each light's index — and with it its type, shadow kind, gobo and beam — is a
+// Loops over lights are unrolled by FOR_EACH_LIGHT (SceneFrame::defines), the
+// per-light marches once per light structure (FOR_EACH_LIGHT_SHARED), so each
+// light's index — and with it its type, shadow kind, gobo and beam — is a
 // constant in its copy of the code, and `group` is a constant at every call:
 // a sample pays only for the lights it evaluates, as they are.
 
@@ -263,7 +264,7 @@ vec3 march_airlight(vec3 dir, float d, SampleRange r, float offset) {
     sum += march_segment(dir, suns, r, offset, UNBOUNDED_SUNS);
   }
 #define ADD_LIGHT_MARCH(i) sum += march_light(i, dir, d, r, offset);
-  FOR_EACH_LIGHT(ADD_LIGHT_MARCH)
+  FOR_EACH_LIGHT_SHARED(ADD_LIGHT_MARCH)
 #undef ADD_LIGHT_MARCH
   return sum;
 #endif

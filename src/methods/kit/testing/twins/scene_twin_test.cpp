@@ -2,6 +2,7 @@
 // with and without it, the light leg's depth, inscatter) against the C++
 // optics on a scene with every kind of light, through the shared frame.
 #include "methods/kit/frame/scene_frame.hpp"
+#include "methods/kit/frame/scene_defines.hpp"
 #include "gpu/timer.hpp"
 #include "methods/kit/testing/twins/twin_test_support.hpp"
 #include "optics/airlight.hpp"
@@ -189,6 +190,46 @@ TEST(SceneTwin, LightMapArrivalLegAndInscatter) {
   std::printf("scene twin: %d of %zu points within 1e-5 m of a jump, compared for finiteness only\n", near_jumps,
               in.size() / 2);
   EXPECT_GT(lit_in_beams, 500);  // the beams' insides are sampled (half of their 1600 points are near them)
+}
+
+// FOR_EACH_LIGHT_SHARED on the stage's five spots of two structures (three
+// plain with soft edges, two with gobos): one copy of the code per structure,
+// run for each light once, reading that light's data in its structure's
+// slot; after the loops every light's slot holds its own data again.
+TEST(SceneTwin, SharedLightLoopsVisitEachLightOnceWithItsData) {
+  Context& context = Context::headless();
+  const Scene scene = builtin_scene("stage");
+  SceneFrame frame;
+  frame.prepare(scene);
+  PassTimer timer;
+  frame.render(frame_inputs(scene, 8, 8), {}, nullptr, {}, timer);
+  frame.bind();
+  const std::string& defines = frame.defines();
+  const size_t loops = defines.find("#define FOR_EACH_LIGHT_SHARED(F)");
+  ASSERT_NE(loops, std::string::npos);
+  const std::string line = defines.substr(loops, defines.find('\n', loops) - loops);
+  int copies = 0;
+  for (size_t at = line.find(" F("); at != std::string::npos; at = line.find(" F(", at + 1)) ++copies;
+  EXPECT_EQ(copies, 2) << line;
+
+  const int n = static_cast<int>(scene.lights.size());
+  const auto out = run_twin("shared_lights.comp.glsl", {glm::vec4(0.0f)}, 1, 2 * n,
+                            defines + "#define TWIN_BINDING 8\n", binding::first_free_storage);
+  context.check("shared light loops");
+  std::vector<int> visits(n, 0);
+  for (int k = 0; k < 2 * n; ++k) {
+    const int code = static_cast<int>(out[k].w), slot = code % 64, light = code / 64;
+    ASSERT_TRUE(light >= 0 && light < n) << k;
+    EXPECT_EQ(glm::vec3(out[k]), scene.lights[light].position) << "output " << k << ": light " << light;
+    if (k < n) {
+      ++visits[light];
+      EXPECT_EQ(slot, frame.representative(light)) << "visit " << k << ": light " << light;
+    } else {
+      EXPECT_EQ(slot, k - n);
+      EXPECT_EQ(light, k - n) << "light " << slot << "'s slot after the loops";
+    }
+  }
+  EXPECT_EQ(visits, std::vector<int>(n, 1));
 }
 
 }  // namespace
