@@ -47,6 +47,7 @@ const int light_shadows[] = LIGHT_SHADOWS;  // SHADOW_* per light
 const bool light_gobos[] = LIGHT_GOBOS;     // whether a light samples a gobo
 const bool light_beams[] = LIGHT_BEAMS;     // a directional light bounded to its beam
 const bool light_edges[] = LIGHT_EDGES;     // a spot with a smooth edge (edge_deg > 0)
+const bool light_narrow[] = LIGHT_NARROW;   // a spot narrower than 90°: its lit set is its cone, convex
 
 // Code compiled for one light may serve every light of its structure
 // (kit::SceneFrame::representative): LIGHT_DATA(i) is the light whose data
@@ -210,12 +211,16 @@ vec3 gobo_color(int i, vec2 uv) {
 // optics::light_map: the unitless per-channel factor of what light i sends to
 // x: spot → spot_cone · gobo colour toward x; directional with a beam → (x
 // inside the beam) · gobo colour at beam_uv(x); point and unbounded directional → 1.
-vec3 light_map(int i, vec3 x) {
+// `in_cone` (a constant): x is known to lie in a hard-edged spot's cone, whose
+// factor is then 1 without the test.
+vec3 light_map(int i, vec3 x, bool in_cone) {
   if (light_types[i] == LIGHT_SPOT) {
     vec3 axis = LIGHT(i).direction, delta = x - LIGHT(i).position;
     float r = length(delta);
     vec3 dir = r > 0.0 ? delta / r : axis;  // at the apex: the axis, as light_arrival_unmapped
-    float cone = spot_cone(axis, LIGHT(i).cone, light_edges[i] ? LIGHT(i).edge : 0.0, dir);  // a constant 0: the hard cut alone
+    float cone = in_cone && !light_edges[i]
+                     ? 1.0
+                     : spot_cone(axis, LIGHT(i).cone, light_edges[i] ? LIGHT(i).edge : 0.0, dir);  // a constant 0: the hard cut alone
     if (cone == 0.0) return vec3(0.0);
     vec2 uv = gobo_uv(axis, LIGHT(i).gobo_right, LIGHT(i).gobo_up, LIGHT(i).tan_cone, dir);
     return cone * gobo_color(i, uv);
@@ -224,6 +229,7 @@ vec3 light_map(int i, vec3 x) {
   Beam b = light_beam(i);
   return inside_beam(b, x) ? gobo_color(i, beam_uv(b, x)) : vec3(0.0);
 }
+vec3 light_map(int i, vec3 x) { return light_map(i, x, false); }
 
 // optics::arrival without the light map: intensity/falloff toward x (point,
 // spot), or the irradiance (directional).
@@ -257,6 +263,11 @@ vec2 lit_interval(int i, vec3 eye, vec3 dir, float t0, float t1) {
                                      eye, dir, t0, t1);
   return lit.count > 0 ? vec2(lit.piece[0].x, lit.piece[lit.count - 1].y) : vec2(t1, t0);
 }
+
+// Whether light i's lit interval lies in its cone: for a spot narrower than
+// 90° it is the cone's one piece, up to the rounding of its ends. A sample
+// there needs no angle test (light_map's `in_cone`: an atan2 a sample).
+bool lit_interval_in_cone(int i) { return light_types[i] == LIGHT_SPOT && light_narrow[i]; }
 
 // ---- shadow maps (Tóth §4: 2D for spots, cubes for point lights) ---------------
 
@@ -329,10 +340,12 @@ vec3 inscatter_unmapped(int i, vec3 x, vec3 view_dir, vec3 eye_depth) {
 
 // optics::inscatter: light_map × inscatter_unmapped. Outside a cone or a beam
 // the map is 0 and the rest (media, extinction) is skipped: marches stay cheap.
-vec3 inscatter(int i, vec3 x, vec3 view_dir, vec3 eye_depth) {
-  vec3 map = light_map(i, x);
+// `in_cone` as light_map's.
+vec3 inscatter(int i, vec3 x, vec3 view_dir, vec3 eye_depth, bool in_cone) {
+  vec3 map = light_map(i, x, in_cone);
   return map == vec3(0.0) ? vec3(0.0) : map * inscatter_unmapped(i, x, view_dir, eye_depth);
 }
+vec3 inscatter(int i, vec3 x, vec3 view_dir, vec3 eye_depth) { return inscatter(i, x, view_dir, eye_depth, false); }
 
 // ---- pieces of a view ray ------------------------------------------------------
 // Bounded media (Biri 2006 §5.2): the pixel's ray [0, d] cut at the ends of its

@@ -53,9 +53,10 @@ bool isotropic(const std::vector<SceneLobe>& lobes, int first, int count) {
 bool grey(const glm::vec3& c) { return c.r == c.g && c.g == c.b; }
 
 // What structure_defines makes a constant of a light: its type, smooth edge,
-// shadow kind, gobo and beam.
-std::array<int, 5> structure(const SceneLight& l) {
-  return {l.type, l.edge > 0.0f, l.shadow_kind, l.gobo_layer >= 0, l.beam_length > 0.0f};
+// shadow kind, gobo, beam, and for a spot whether it is narrower than 90°
+// (tan_cone > 0: light_record).
+std::array<int, 6> structure(const SceneLight& l) {
+  return {l.type, l.edge > 0.0f, l.shadow_kind, l.gobo_layer >= 0, l.beam_length > 0.0f, l.tan_cone > 0.0f};
 }
 
 // LIGHT_GROUPS declares the lights of each structure that several share,
@@ -101,14 +102,15 @@ std::vector<int> structure_representatives(const std::vector<SceneLight>& lights
 std::string structure_defines(const std::vector<SceneLight>& lights, const std::vector<SceneVolume>& volumes,
                               const std::vector<SceneLobe>& lobes, int medium_lobes, const FrameInputs& in) {
   std::vector<int> types, shadows;
-  std::vector<bool> gobos, beams, edges;
+  std::vector<bool> gobos, beams, edges, narrow;
   for (const SceneLight& l : lights) {
-    const std::array<int, 5> s = structure(l);
+    const std::array<int, 6> s = structure(l);
     types.push_back(s[0]);
     edges.push_back(s[1]);
     shadows.push_back(s[2]);
     gobos.push_back(s[3]);
     beams.push_back(s[4]);
+    narrow.push_back(s[5]);
   }
   bool grey_media = grey(in.medium.sigma_s) && grey(in.medium.sigma_t());
   for (const SceneVolume& v : volumes) grey_media = grey_media && grey(v.sigma_s) && grey(v.sigma_t);
@@ -123,6 +125,7 @@ std::string structure_defines(const std::vector<SceneLight>& lights, const std::
   d += "#define LIGHT_GOBOS " + glsl_array("bool", gobos) + "\n";
   d += "#define LIGHT_BEAMS " + glsl_array("bool", beams) + "\n";
   d += "#define LIGHT_EDGES " + glsl_array("bool", edges) + "\n";
+  d += "#define LIGHT_NARROW " + glsl_array("bool", narrow) + "\n";
   std::vector<int> identity(lights.size());
   for (size_t k = 0; k < lights.size(); ++k) identity[k] = static_cast<int>(k);
   d += "#define LIGHT_IDENTITY " + glsl_array("int", identity) + "\n";

@@ -55,6 +55,10 @@ bool in_group(int i, int group) {
   return group == ALL_LIGHTS || (group == UNBOUNDED_SUNS ? unbounded_sun(i) : i == group);
 }
 
+// Whether every sample of the march of `group` lies in light i's cone: the
+// light's own march, over its lit interval.
+bool in_own_cone(int i, int group) { return i == group && lit_interval_in_cone(i); }
+
 bool any_unbounded_sun() {
   bool any = false;
 #define OR_UNBOUNDED_SUN(i) any = any || unbounded_sun(i);
@@ -205,10 +209,10 @@ vec3 march_segment(vec3 dir, Segment s, SampleRange r, float offset, int group) 
     vec3 x = eye + t.x * dir;
     vec3 eye_depth = eye_leg_depth(eye, x);
     vec3 e = vec3(0.0);
-#define ADD_LIGHT_SAMPLE(i)                                  \
-    if (in_group(i, group)) {                                \
-      vec3 c = inscatter(i, x, dir, eye_depth);              \
-      if (c != vec3(0.0)) e += c * shadow_visibility(i, x);  \
+#define ADD_LIGHT_SAMPLE(i)                                             \
+    if (in_group(i, group)) {                                           \
+      vec3 c = inscatter(i, x, dir, eye_depth, in_own_cone(i, group));  \
+      if (c != vec3(0.0)) e += c * shadow_visibility(i, x);             \
     }
     FOR_EACH_LIGHT(ADD_LIGHT_SAMPLE)
 #undef ADD_LIGHT_SAMPLE

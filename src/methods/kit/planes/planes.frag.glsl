@@ -123,7 +123,11 @@ vec3 piece_airlight(vec3 dir, float cos_axis, vec2 t, float offset) {
   for (int k = 0; k < n; ++k) {
     vec2 s = piece_sample(p, light_position, eye, dir, (float(k) + offset) / float(n), n);
     vec3 x = eye + s.x * dir;
+#ifdef LIT_SAMPLING
+    vec3 map = light_map(light, x, lit_interval_in_cone(light));  // the piece lies in the lit interval
+#else
     vec3 map = light_map(light, x);
+#endif
 #if defined(FULLY_LIT) || defined(FULLY_LIT_GAMMA)
     if (map == vec3(0.0)) continue;  // Nilsson §5.3: nothing shadows a fully lit part
 #else
