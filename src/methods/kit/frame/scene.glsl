@@ -6,11 +6,11 @@
 //
 // Specialized to the scene: binding points and the scene's structure come as
 // macros from kit::SceneFrame::defines() — LIGHT_COUNT, LIGHT_TYPES,
-// LIGHT_SHADOWS, LIGHT_GOBOS, LIGHT_BEAMS, VOLUME_COUNT, LIGHT_MODEL_TYPE,
-// GREY_MEDIA, MEDIUM_PHASE(c), VOLUME_PHASE(v, c), FOR_EACH_LIGHT(F),
-// FOR_EACH_LIGHT_SHARED(F) … — so that with a constant light index every test
-// of a light's kind folds away: a generic shader pays for every branch it
-// holds (docs/design.md §2).
+// LIGHT_SHADOWS, LIGHT_GOBOS, LIGHT_BEAMS, LIGHT_EDGES, LIGHT_NARROW,
+// VOLUME_COUNT, LIGHT_MODEL_TYPE, GREY_MEDIA, MEDIUM_PHASE(c),
+// VOLUME_PHASE(v, c), FOR_EACH_LIGHT(F), FOR_EACH_LIGHT_SHARED(F) … — so that
+// with a constant light index every test of a light's kind folds away: a
+// generic shader pays for every branch it holds (docs/design.md §2).
 // A program that defines SCENE_IN_REGISTERS before including this file and
 // calls load_scene() first reads each light, volume and lobe from its buffer
 // once per invocation instead of at every use.

@@ -66,9 +66,10 @@ public:
 
   // What every program that includes scene.glsl is compiled with, for this
   // frame: the binding points and the scene's structure as constants — light
-  // count and, per light, its type, shadow kind, gobo and beam; volume count;
-  // the phase lobes' types; the light model; whether the media are grey — so
-  // that a program pays only for what the scene has (docs/design.md §2). Data
+  // count and, per light, its type, shadow kind, gobo, beam, smooth edge and
+  // narrowness; volume count; the phase lobes' types; the light model;
+  // whether the media are grey — so that a program pays only for what the
+  // scene has (docs/design.md §2). Data
   // (positions, colours, σ, g) stays in the buffers: changing it recompiles
   // nothing; changing the structure compiles each program once more.
   const std::string& defines() const { return defines_; }

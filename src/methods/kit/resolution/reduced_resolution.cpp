@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <optional>
 #include <string>
 
 namespace airlight::kit {
@@ -29,21 +30,38 @@ constexpr GLsizeiptr list_header = 4 * sizeof(GLuint);  // pixel_list.glsl's lis
 // ("Reduced resolution's second pass").
 constexpr float near_light_coarse_pixels = 8.0f, near_light_min_pixels = 32.0f;
 
-// The window coordinates (GL, pixels) of each point and spot light in front
-// of the camera: view_ray.glsl's window_of on the CPU.
+// The window coordinates (GL, pixels) of what lies at `offset` from the eye,
+// if it is in front of the camera: view_ray.glsl's window_of on the CPU.
+std::optional<glm::vec2> window_of(const FrameInputs& in, const geometry::CameraBasis& f, const glm::dvec3& offset) {
+  const double depth = glm::dot(offset, f.forward);
+  if (!(depth > 0.0)) return std::nullopt;
+  const double aspect = double(in.width) / in.height;
+  const glm::dvec2 ndc(glm::dot(offset, f.right) / aspect, glm::dot(offset, f.up));
+  const glm::dvec2 window = (ndc / (depth * f.tan_half_fov_y) + 1.0) * 0.5 * glm::dvec2(in.width, in.height);
+  if (!std::isfinite(window.x) || !std::isfinite(window.y)) return std::nullopt;
+  return glm::vec2(window);
+}
+
+// Where L_air peaks in the image: each point and spot light in front of the
+// camera (1/r² and the phase function peak there), and for a directional
+// light the directions toward it and away from it, where view rays meet its
+// light at 0° and 180°, the phase function's forward and backward peaks (a
+// murky lobe's forward peak spans a few degrees; random scenes 32, 35, 38).
 std::vector<glm::vec2> light_images(const FrameInputs& in) {
   const geometry::CameraBasis f = geometry::camera_basis(in.camera);
-  const double aspect = double(in.width) / in.height;
-  std::vector<glm::vec2> images;
+  std::vector<glm::dvec3> offsets;
   for (const Light& light : in.lights) {
-    if (light.type == LightType::directional) continue;
-    const glm::dvec3 offset = glm::dvec3(light.position) - f.position;
-    const double depth = glm::dot(offset, f.forward);
-    if (!(depth > 0.0)) continue;
-    const glm::dvec2 ndc(glm::dot(offset, f.right) / aspect, glm::dot(offset, f.up));
-    const glm::dvec2 window = (ndc / (depth * f.tan_half_fov_y) + 1.0) * 0.5 * glm::dvec2(in.width, in.height);
-    if (std::isfinite(window.x) && std::isfinite(window.y)) images.emplace_back(window);
+    if (light.type != LightType::directional) {
+      offsets.push_back(glm::dvec3(light.position) - f.position);
+      continue;
+    }
+    const glm::dvec3 travel = glm::normalize(glm::dvec3(light.direction));
+    offsets.push_back(-travel);
+    offsets.push_back(travel);
   }
+  std::vector<glm::vec2> images;
+  for (const glm::dvec3& offset : offsets)
+    if (const auto window = window_of(in, f, offset)) images.push_back(*window);
   return images;
 }
 

@@ -4,9 +4,11 @@
 // (joint bilateral upsampling, Kopf et al. 2007, with the G-buffer distance
 // as the guide). Where no neighbour lies within reach of the pixel's
 // distance, the weights fail; so they do where the neighbours on its side
-// disagree (an edge of L_air itself) and within `near_light` pixels of a
-// point or spot light's image, where L_air changes by large factors from
-// pixel to pixel. Such a pixel is recomputed on the full grid (the value
+// disagree (an edge of L_air itself), within `near_light` pixels of a
+// light's image (ReducedResolution: a point or spot light, a directional
+// light's direction), where L_air changes by large factors from pixel to
+// pixel, and beyond the outermost coarse centres. Such a pixel is
+// recomputed on the full grid (the value
 // written here is 0 until then): this pass lists them (pixel_list.glsl);
 // with MARK it writes their distance, −1 elsewhere, and with FLAG_BLOCKS
 // flags each 2×2 block that holds one, for the halo around them
@@ -27,7 +29,7 @@ layout(r32f, binding = 2) uniform writeonly image2D failed_blocks;
 #endif
 #ifdef BILATERAL
 layout(std430, binding = BINDING_LIGHT_IMAGES) readonly buffer LightImages { vec2 light_image[]; };
-uniform int light_images;  // point and spot lights in front of the camera, in window coordinates
+uniform int light_images;  // where L_air peaks (ReducedResolution's light_images), in window coordinates
 uniform float near_light;  // pixels
 #endif
 
@@ -60,12 +62,23 @@ struct Taps {
 // exp(−(gap/RELATIVE_GAP)²) = exp2(gap² · GAP_EXPONENT).
 const float GAP_EXPONENT = -1.0 / (RELATIVE_GAP * RELATIVE_GAP * log(2.0));
 
-// A failed pixel's value is left 0: the recomputation writes it.
-Upsampled upsample(Taps taps, float d, bool near_light_image) {
+// A failed pixel's value is left 0: the recomputation writes it. `recompute`
+// fails it whatever its neighbours.
+Upsampled upsample(Taps taps, float d, bool recompute) {
   vec3 sum = vec3(0.0);
   float weight = 0.0, best = 0.0;
   vec3 least = vec3(uintBitsToFloat(0x7f800000u)), greatest = vec3(0.0);
   float inverse_d = 1.0 / max(d, 1e-30);
+#ifdef BILATERAL
+  // The pixel lies on the surface its neighbours span when their distances,
+  // interpolated to it, give its own: a surface seen at a grazing angle or
+  // across a wide view, whose distance changes by more than RELATIVE_GAP
+  // from one coarse pixel to the next, is no edge (random scene 38: the far
+  // plane of an 86° view at 32×24, which the depth weights alone cut into
+  // steps). There the weights are bilinear.
+  float planar = mix(mix(taps.t00.a, taps.t10.a, taps.f.x), mix(taps.t01.a, taps.t11.a, taps.f.x), taps.f.y);
+  bool on_surface = abs(planar - d) * inverse_d <= RELATIVE_GAP;
+#endif
   for (int k = 0; k < 4; ++k) {
     vec2 o = vec2(k & 1, k >> 1);
     vec2 axis = mix(vec2(1.0) - taps.f, taps.f, o);
@@ -74,7 +87,7 @@ Upsampled upsample(Taps taps, float d, bool near_light_image) {
     float w = axis.x * axis.y;
 #ifdef BILATERAL
     float gap = abs(tap.a - d) * inverse_d;
-    float depth_weight = exp2(gap * gap * GAP_EXPONENT);
+    float depth_weight = on_surface ? 1.0 : exp2(gap * gap * GAP_EXPONENT);
     best = max(best, depth_weight);
     w *= depth_weight;
     if (depth_weight >= MIN_WEIGHT) {
@@ -86,7 +99,7 @@ Upsampled upsample(Taps taps, float d, bool near_light_image) {
     weight += w;
   }
 #ifdef BILATERAL
-  bool failed = near_light_image || !(best >= MIN_WEIGHT) || any(lessThan(least, (1.0 - CONTRAST) * greatest));
+  bool failed = recompute || !(best >= MIN_WEIGHT) || any(lessThan(least, (1.0 - CONTRAST) * greatest));
   return Upsampled(failed ? vec3(0.0) : sum / weight, failed);
 #else
   return Upsampled(sum, false);
@@ -106,8 +119,8 @@ Taps fetched_taps(ivec2 pixel, ivec2 size) {
 }
 
 // Returns whether the pixel, at distance d, failed.
-bool upsample_pixel(ivec2 pixel, float d, Taps taps, bool near_light_image) {
-  Upsampled u = upsample(taps, d, near_light_image);
+bool upsample_pixel(ivec2 pixel, float d, Taps taps, bool recompute) {
+  Upsampled u = upsample(taps, d, recompute);
   imageStore(airlight_out, pixel, vec4(u.value, 1.0));
 #ifdef MARK
   imageStore(failed_out, pixel, vec4(u.failed ? d : -1.0));
@@ -149,6 +162,20 @@ Taps block_taps(ivec2 r, ivec2 k) {
 }
 #endif
 
+// Whether the pixel lies beyond the outermost coarse centres: with no
+// neighbour on its outer side, its clamped taps hold the edge's value flat
+// (random scene 38: 13 % short where L_air climbs steeply to the image's
+// edge). Such pixels are recomputed: a ring a coarse pixel wide at most.
+bool beyond_coarse_centres(ivec2 pixel, ivec2 size) {
+#ifdef BILATERAL
+  ivec2 coarse_size = textureSize(coarse, 0);
+  vec2 at = (vec2(pixel) + 0.5) * vec2(coarse_size) / vec2(size) - 0.5;
+  return any(lessThan(at, vec2(0.0))) || any(greaterThan(at, vec2(coarse_size - 1)));
+#else
+  return false;
+#endif
+}
+
 // 2×2 pixels an invocation: on llvmpipe an invocation's own cost is a good
 // part of a pass this short.
 void main() {
@@ -174,9 +201,12 @@ void main() {
       float d = distances[2 * y + x];
       uint bit = 1u << (2 * y + x);
 #ifdef EXACT
-      if (upsample_pixel(pixel, d, block_taps(r0 + ivec2(x, y), DIVISOR == 2 ? ivec2(x, y) : ivec2(0)), near)) failed |= bit;
+      bool recompute = near || beyond_coarse_centres(pixel, size);
+      if (upsample_pixel(pixel, d, block_taps(r0 + ivec2(x, y), DIVISOR == 2 ? ivec2(x, y) : ivec2(0)), recompute))
+        failed |= bit;
 #else
-      if (all(lessThan(pixel, size)) && upsample_pixel(pixel, d, fetched_taps(pixel, size), near)) failed |= bit;
+      bool recompute = near || beyond_coarse_centres(pixel, size);
+      if (all(lessThan(pixel, size)) && upsample_pixel(pixel, d, fetched_taps(pixel, size), recompute)) failed |= bit;
 #endif
     }
 #ifdef FLAG_BLOCKS
