@@ -275,7 +275,7 @@ bool lit_interval_in_cone(int i) { return light_types[i] == LIGHT_SPOT && light_
 // spot to x, or x's depth along a directional light's travel.
 float shadow_distance(int i, vec3 x) {
   if (light_types[i] == LIGHT_DIRECTIONAL) return dot(x, LIGHT(i).direction);
-  return length(x - LIGHT(i).position);
+  return length(LIGHT(i).position - x);  // light_arrival_unmapped's length, to the bit: computed once
 }
 
 // World size of one shadow-map texel at x (at the map's centre, where texels are largest).
