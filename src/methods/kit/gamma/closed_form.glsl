@@ -118,6 +118,10 @@ vec3 local_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b)
 // runs, so the 5 pieces per interval a smooth edge needs made a hard edge run
 // 4 empty closed forms beside its 1 (docs/decisions.md, "Γ's cost").
 vec3 hard_spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, ConeIntervals lit) {
+  if (light_narrow[i]) {  // a constant: below 90° the cone is one piece, and no loop is needed
+    vec2 piece = lit.count > 0 ? lit.piece[0] : vec2(0.0);
+    return local_piece(i, m, eye, dir, piece.x, piece.y);
+  }
   vec3 sum = vec3(0.0);
   for (int k = 0; k < lit.count; ++k) {
     vec2 piece = k == 0 ? lit.piece[0] : lit.piece[1];  // by a select: indexed by k, Mesa would unroll the loop
