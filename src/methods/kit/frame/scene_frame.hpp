@@ -69,9 +69,9 @@ public:
   // count and, per light, its type, shadow kind, gobo, beam, smooth edge and
   // narrowness; volume count; the phase lobes' types; the light model;
   // whether the media are grey — so that a program pays only for what the
-  // scene has (docs/design.md §2). Data
-  // (positions, colours, σ, g) stays in the buffers: changing it recompiles
-  // nothing; changing the structure compiles each program once more.
+  // scene has (docs/design.md §2). Data (positions, colours, σ, g) stays in
+  // the buffers: changing it recompiles nothing; changing the structure
+  // compiles each program once more.
   const std::string& defines() const { return defines_; }
   // The first light whose structure (its constants in defines()) is light
   // `light`'s: a program compiled for it with SHARED_LIGHT (scene.glsl) draws

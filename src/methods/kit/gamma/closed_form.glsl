@@ -131,11 +131,11 @@ vec3 hard_spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, ConeIntervals
 }
 
 // sin and cos of spot i's cone from its tan_cone by one root, where the frame
-// gives it (cones below 90°), instead of a sin and a cos per pixel. The test is
-// on the light's value, so all lanes take the same side and llvmpipe runs one.
+// gives it (cones below 90°: light_narrow, a constant), instead of a sin and a
+// cos per pixel.
 vec2 spot_sin_cos(int i) {
+  if (!light_narrow[i]) return vec2(sin(LIGHT(i).cone), cos(LIGHT(i).cone));
   float t = LIGHT(i).tan_cone;
-  if (!(t > 0.0)) return vec2(sin(LIGHT(i).cone), cos(LIGHT(i).cone));
   float c = 1.0 / sqrt(1.0 + t * t);
   return vec2(t * c, c);
 }

@@ -163,8 +163,7 @@ void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
 // settings as constants (planes.frag.glsl).
 std::string PlanePass::defines(const SceneFrame& frame, int light, Part part) const {
   const std::string index = std::to_string(frame.representative(light));
-  std::string d = "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n#define PLANE_LIGHT " + index +
-                  "\n#define SHARED_LIGHT " + index + "\n";
+  std::string d = "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n#define SHARED_LIGHT " + index + "\n";
   if (settings_.lattice > 0) d += "#define LATTICE_XI\n";
   if (settings_.jitter != Jitter::none) d += "#define JITTER\n";
   if (settings_.lit_sampling) d += "#define LIT_SAMPLING\n";

@@ -10,8 +10,8 @@
 // in its fog and a shaft's edge no step across it.
 //
 // Specialized by PlanePass, one program per light structure and part:
-// PLANE_LIGHT (the index of the structure's first light, whose constants the
-// program takes; it draws light shared_light: scene.glsl SHARED_LIGHT),
+// SHARED_LIGHT (the index of the structure's first light, whose constants the
+// program takes; it draws light shared_light: scene.glsl),
 // LATTICE_XI (ξ from the lattice), JITTER (per-pixel offsets of the samples
 // within their slabs, Dobashi §7), LIT_SAMPLING (the slab's lit piece, else
 // the slab as Dobashi); for a cut plane's pieces (plane_pass.cpp
@@ -24,7 +24,7 @@
 
 layout(binding = BINDING_JITTER) uniform sampler2D jitter_offsets;  // R32F tile of values in [0, 1)
 
-const int light = PLANE_LIGHT;
+const int light = SHARED_LIGHT;
 uniform float dz;
 
 // A piece [ta, tb] of the ray eye + t·dir in the equiangular substitution of

@@ -10,11 +10,11 @@
 // through the shared inscatter without the light map) is evaluated at the
 // lattice's vertices at the slab's middle and interpolated across each cell,
 // as Gouraud shading did in the paper.
-// Specialized as planes.frag.glsl: PLANE_LIGHT, LATTICE_XI (ξ per vertex, else
+// Specialized as planes.frag.glsl: SHARED_LIGHT, LATTICE_XI (ξ per vertex, else
 // per fragment: `xi` unused).
 #include "methods/kit/planes/plane_vertex.glsl"
 
-const int light = PLANE_LIGHT;  // index into lights[]
+const int light = SHARED_LIGHT;  // its structure's constants; its data are light shared_light's
 uniform int lattice;      // cells per side of the mesh
 uniform float dz;         // slab thickness in view depth
 

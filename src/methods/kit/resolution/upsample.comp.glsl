@@ -7,12 +7,11 @@
 // disagree (an edge of L_air itself), within `near_light` pixels of a
 // light's image (ReducedResolution: a point or spot light, a directional
 // light's direction), where L_air changes by large factors from pixel to
-// pixel, and beyond the outermost coarse centres. Such a pixel is
-// recomputed on the full grid (the value
-// written here is 0 until then): this pass lists them (pixel_list.glsl);
-// with MARK it writes their distance, −1 elsewhere, and with FLAG_BLOCKS
-// flags each 2×2 block that holds one, for the halo around them
-// (recompute_grid.comp.glsl).
+// pixel, and beyond the outermost coarse centres. Such a pixel is recomputed
+// on the full grid (the value written here is 0 until then): this pass lists
+// them (pixel_list.glsl); with MARK it writes their distance, −1 elsewhere,
+// and with FLAG_BLOCKS flags each 2×2 block that holds one, for the halo
+// around them (recompute_grid.comp.glsl).
 #include "methods/kit/frame/pixel_list.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;  // gpu::pixel_workgroup
@@ -200,12 +199,11 @@ void main() {
       ivec2 pixel = first + ivec2(x, y);
       float d = distances[2 * y + x];
       uint bit = 1u << (2 * y + x);
-#ifdef EXACT
       bool recompute = near || beyond_coarse_centres(pixel, size);
+#ifdef EXACT
       if (upsample_pixel(pixel, d, block_taps(r0 + ivec2(x, y), DIVISOR == 2 ? ivec2(x, y) : ivec2(0)), recompute))
         failed |= bit;
 #else
-      bool recompute = near || beyond_coarse_centres(pixel, size);
       if (all(lessThan(pixel, size)) && upsample_pixel(pixel, d, fetched_taps(pixel, size), recompute)) failed |= bit;
 #endif
     }
