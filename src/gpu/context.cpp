@@ -41,7 +41,7 @@ EGLDisplay device_display() {
   return EGL_NO_DISPLAY;
 }
 
-EGLContext create_context(EGLDisplay display) {
+EGLContext create_context(EGLDisplay display, EGLContext share = EGL_NO_CONTEXT) {
   if (!eglBindAPI(EGL_OPENGL_API)) return EGL_NO_CONTEXT;
   const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
                                EGL_CONTEXT_MINOR_VERSION, 5,
@@ -49,7 +49,7 @@ EGLContext create_context(EGLDisplay display) {
                                EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE,
                                EGL_NONE};
   // No config: the context renders only into framebuffer objects (EGL_KHR_no_config_context).
-  return eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+  return eglCreateContext(display, EGL_NO_CONFIG_KHR, share, attributes);
 }
 
 }  // namespace
@@ -102,8 +102,16 @@ Context::Context() {
   glDebugMessageCallback(debug_callback, this);
 }
 
+std::function<void()> Context::worker_binding() {
+  if (!owned_) return {};
+  if (worker_ == EGL_NO_CONTEXT) worker_ = create_context(display_, context_);
+  if (worker_ == EGL_NO_CONTEXT) return {};
+  return [display = display_, worker = worker_] { eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, worker); };
+}
+
 Context::~Context() {
   if (!owned_) return;
+  if (worker_ != EGL_NO_CONTEXT) eglDestroyContext(display_, worker_);
   eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display_, context_);
   eglTerminate(display_);

@@ -5,6 +5,7 @@
 // error becomes a Failure (and so a test failure) at the next check().
 #include <epoxy/egl.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,13 @@ public:
 
   const std::string& renderer() const { return renderer_; }
 
+  // Makes a context that shares this one's objects current on the calling
+  // thread, a worker's that links programs ahead (program.hpp's link_ahead).
+  // Returns an empty function when there is none: an adopted (engine's)
+  // context, whose platform airlight does not own. The shared context is
+  // created on the first call, which must come from this context's thread.
+  std::function<void()> worker_binding();
+
   // Throws InputError("frame", "size") when a frame of width × height cannot be
   // one framebuffer of this implementation: beyond its texture, framebuffer or
   // viewport limit, queried once (glGet), so a size is refused before anything
@@ -46,6 +54,7 @@ private:
                              const void* self);
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
+  EGLContext worker_ = EGL_NO_CONTEXT;
   std::string renderer_;
   struct Limit {
     int side;

@@ -198,6 +198,55 @@ TEST(Gpu, CompileErrorsNameTheFile) {
   EXPECT_NE(failure_text([] { expand_source("no/such.glsl"); }).find("unknown shader 'no/such.glsl'"), std::string::npos);
 }
 
+// What fill.comp.glsl writes with `program` bound, for 100 elements.
+std::vector<float> fill(const Program& program) {
+  constexpr int count = 100;
+  const Buffer buffer = make_buffer(count * sizeof(float), nullptr);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
+  glUseProgram(program.id());
+  set_uniform(program, "count", count);
+  glDispatchCompute((count + 63) / 64, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> values(count);
+  glGetNamedBufferSubData(buffer.id(), 0, count * sizeof(float), values.data());
+  return values;
+}
+
+// A program linked ahead on the headless context's worker is the one the
+// cache then gives, counted once, and computes what the same program linked
+// in place does; asking again links nothing.
+TEST(Gpu, ProgramLinkedAheadOnTheWorkerIsTheCachedOne) {
+  Context& context = Context::headless();
+  const std::string defines = "#define SCALE 0.125\n";
+  const int ahead = linked_ahead_count(), cached = cached_program_count();
+  link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines);
+  link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines);  // once
+  const Program& linked = cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines);
+  EXPECT_EQ(linked_ahead_count(), ahead + 1) << "the worker did not link it";
+  EXPECT_EQ(cached_program_count(), cached + 1);
+  EXPECT_EQ(fill(linked), fill(make_compute_program("gpu/test_shaders/fill.comp.glsl", defines)));
+  link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines);  // already cached: nothing to link
+  EXPECT_EQ(cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines).id(), linked.id());
+  EXPECT_EQ(linked_ahead_count(), ahead + 1);
+  context.check("link ahead");
+}
+
+// A compile error on the worker is thrown where the program is asked for,
+// with the same message as in place; clear_program_cache drops what is still
+// being linked.
+TEST(Gpu, CompileErrorsOnTheWorkerAreThrownWhereTheProgramIsAskedFor) {
+  Context::headless();
+  link_compute_ahead("gpu/test_shaders/broken.comp.glsl");
+  const std::string text = failure_text([] { cached_compute_program("gpu/test_shaders/broken.comp.glsl"); });
+  EXPECT_EQ(text, failure_text([] { make_compute_program("gpu/test_shaders/broken.comp.glsl"); }));
+  EXPECT_NE(text.find("cannot compile shader gpu/test_shaders/broken.comp.glsl"), std::string::npos) << text;
+  const int ahead = linked_ahead_count();
+  link_compute_ahead("gpu/test_shaders/fill.comp.glsl", "#define SCALE 3.0\n");
+  clear_program_cache();
+  cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 3.0\n");
+  EXPECT_EQ(linked_ahead_count(), ahead) << "cleared, it was linked again in place";
+}
+
 TEST(Gpu, GlErrorsBecomeFailures) {
   Context& context = Context::headless();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 987654);  // not a buffer name: GL_INVALID_OPERATION/VALUE

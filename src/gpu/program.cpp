@@ -1,14 +1,21 @@
 #include "gpu/program.hpp"
 
+#include "gpu/context.hpp"
 #include "gpu/shader_sources.hpp"
 
 #include <airlight/error.hpp>
 
 #include <glm/gtc/type_ptr.hpp>
+#include <condition_variable>
+#include <cstdlib>
+#include <deque>
+#include <future>
 #include <map>
+#include <mutex>
 #include <regex>
 #include <set>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 namespace airlight::gpu {
@@ -92,8 +99,10 @@ std::string expand_source(const std::string& name, const std::string& defines) {
   return expand_with_order(name, defines, order);
 }
 
-Program make_program(std::initializer_list<Stage> stages, const std::string& defines) {
-  Program program(glCreateProgram());
+namespace {
+
+// Compiles `stages` and links them into `program`; throws Failure with the log.
+void link_into(const Program& program, const std::vector<Stage>& stages, const std::string& defines) {
   std::vector<Shader> shaders;
   std::string names;
   for (const auto& stage : stages) {
@@ -105,6 +114,13 @@ Program make_program(std::initializer_list<Stage> stages, const std::string& def
   GLint ok = GL_FALSE;
   glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
   if (!ok) throw Failure("cannot link program " + names + ":\n" + info_log(program.id(), true));
+}
+
+}  // namespace
+
+Program make_program(std::initializer_list<Stage> stages, const std::string& defines) {
+  Program program(glCreateProgram());
+  link_into(program, {stages}, defines);
   return program;
 }
 
@@ -135,19 +151,116 @@ void set_uniform(const Program& p, const char* name, const std::vector<int>& v) 
 }
 
 namespace {
+
 std::map<std::string, Program>& program_cache() {
   static auto* cache = new std::map<std::string, Program>;  // never destroyed, as the context
   return *cache;
 }
-}  // namespace
 
-const Program& cached_program(std::initializer_list<Stage> stages, const std::string& defines) {
+std::string program_key(std::initializer_list<Stage> stages, const std::string& defines) {
   std::string key = defines;
   for (const Stage& s : stages) key += "\n#stage " + std::to_string(s.type) + " " + s.name;
+  return key;
+}
+
+// One thread that compiles and links in a context sharing the caller's
+// objects. llvmpipe spends about half of a large program's compile in the
+// link (GLSL to NIR, docs/decisions.md); the other half, the machine code, it
+// generates at the first draw on the drawing thread, so only the link moves.
+class Linker {
+public:
+  // The process's linker; nullptr when the context has no worker to give.
+  static Linker* instance() {
+    static Linker* linker = [] {
+      std::function<void()> bind = Context::current().worker_binding();
+      if (!bind) return static_cast<Linker*>(nullptr);
+      auto* made = new Linker(std::move(bind));  // never destroyed, as the context
+      // A frame that threw may leave a link running: the process's exit waits
+      // for it rather than tear the driver down under it (Mesa's own exit
+      // handlers, registered with the context before this, run after).
+      std::atexit([] { instance()->wait_idle(); });
+      return made;
+    }();
+    return linker;
+  }
+
+  void wait_idle() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    idle_.wait(lock, [this] { return jobs_.empty() && !running_; });
+  }
+
+  std::future<Program> link(std::vector<Stage> stages, std::string defines) {
+    std::packaged_task<Program()> job([stages = std::move(stages), defines = std::move(defines)] {
+      Program program(glCreateProgram());
+      link_into(program, stages, defines);
+      glFinish();  // the link is complete before another context uses the program
+      return program;
+    });
+    std::future<Program> linked = job.get_future();
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      jobs_.push_back(std::move(job));
+    }
+    ready_.notify_one();
+    return linked;
+  }
+
+private:
+  explicit Linker(std::function<void()> bind) {
+    std::thread([this, bind = std::move(bind)] {
+      bind();
+      for (;;) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        ready_.wait(lock, [this] { return !jobs_.empty(); });
+        std::packaged_task<Program()> job = std::move(jobs_.front());
+        jobs_.pop_front();
+        running_ = true;
+        lock.unlock();
+        job();  // a compile or link error is the future's, thrown where the program is asked for
+        lock.lock();
+        running_ = false;
+        idle_.notify_all();
+      }
+    }).detach();
+  }
+
+  std::mutex mutex_;
+  std::condition_variable ready_, idle_;
+  std::deque<std::packaged_task<Program()>> jobs_;
+  bool running_ = false;
+};
+
+// Programs a Linker is linking, by key (this thread's, as the cache).
+std::map<std::string, std::future<Program>>& linking() {
+  static auto* pending = new std::map<std::string, std::future<Program>>;
+  return *pending;
+}
+
+int taken_ahead = 0;  // programs cached_program took from the Linker
+
+}  // namespace
+
+void link_ahead(std::initializer_list<Stage> stages, const std::string& defines) {
+  const std::string key = program_key(stages, defines);
+  if (program_cache().count(key) || linking().count(key)) return;
+  if (Linker* linker = Linker::instance()) linking().emplace(key, linker->link({stages}, defines));
+}
+
+void link_compute_ahead(const std::string& name, const std::string& defines) {
+  link_ahead({{GL_COMPUTE_SHADER, name}}, defines);
+}
+
+const Program& cached_program(std::initializer_list<Stage> stages, const std::string& defines) {
+  const std::string key = program_key(stages, defines);
   auto& cache = program_cache();
   auto it = cache.find(key);
-  if (it == cache.end()) it = cache.emplace(key, make_program(stages, defines)).first;
-  return it->second;
+  if (it != cache.end()) return it->second;
+  const auto pending = linking().find(key);
+  if (pending == linking().end()) return cache.emplace(key, make_program(stages, defines)).first->second;
+  std::future<Program> linked = std::move(pending->second);
+  linking().erase(pending);
+  ++taken_ahead;
+  return cache.emplace(key, linked.get()).first->second;
 }
 
 const Program& cached_compute_program(const std::string& name, const std::string& defines) {
@@ -156,7 +269,13 @@ const Program& cached_compute_program(const std::string& name, const std::string
 
 int cached_program_count() { return static_cast<int>(program_cache().size()); }
 
-void clear_program_cache() { program_cache().clear(); }
+int linked_ahead_count() { return taken_ahead; }
+
+void clear_program_cache() {
+  for (auto& [key, linked] : linking()) linked.wait();  // deleted here, not while the worker links them
+  linking().clear();
+  program_cache().clear();
+}
 
 void dispatch_pixels(int width, int height) {
   glDispatchCompute(static_cast<GLuint>((width + pixel_workgroup - 1) / pixel_workgroup),

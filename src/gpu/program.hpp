@@ -36,8 +36,19 @@ Program make_compute_program(const std::string& name, const std::string& defines
 // and pays for compiling only when the define set is new.
 const Program& cached_program(std::initializer_list<Stage> stages, const std::string& defines = "");
 const Program& cached_compute_program(const std::string& name, const std::string& defines = "");
+// Starts compiling and linking a program that cached_program will be asked for
+// later in this frame, on a worker thread with a context sharing this one's
+// objects, so that the GLSL compiler runs beside the frame's earlier passes:
+// cached_program then waits for it instead of linking. Without a worker (an
+// engine's context) it does nothing and cached_program links as before. Only
+// what a frame is sure to use belongs here: a program linked ahead and never
+// asked for is never counted or freed until clear_program_cache.
+void link_ahead(std::initializer_list<Stage> stages, const std::string& defines = "");
+void link_compute_ahead(const std::string& name, const std::string& defines = "");
 // Programs the cache has compiled so far in this process.
 int cached_program_count();
+// Of those, the ones a worker linked ahead (link_ahead).
+int linked_ahead_count();
 // Deletes every cached program (the context current, none of them in use): a
 // long run over scenes of many structures would otherwise keep all their
 // programs, hundreds of megabytes of llvmpipe's code per structure.

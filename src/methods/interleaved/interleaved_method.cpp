@@ -26,6 +26,7 @@ private:
   static bool guarded(const Settings& s) { return s.real("guard") > 0.0 && s.integer("block") > 1; }
 
   void prepare_airlight(const Scene&) override { march_.prepare(); }
+  void link_ahead(const kit::SceneFrame& frame) override { march_.link_ahead(frame); }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     {

@@ -15,6 +15,7 @@ public:
 
 private:
   void prepare_airlight(const Scene&) override { march_.prepare(); }
+  void link_ahead(const kit::SceneFrame& frame) override { march_.link_ahead(frame); }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     gpu::ScopedPass pass(timer, "airlight");

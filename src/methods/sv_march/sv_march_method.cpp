@@ -42,6 +42,7 @@ private:
     march_.prepare();
   }
 
+  void link_ahead(const kit::SceneFrame& frame) override { march_.link_ahead(frame); }
   void build_frame(const kit::SceneFrame& frame, gpu::PassTimer& timer) override { shell_.build(frame, timer); }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {

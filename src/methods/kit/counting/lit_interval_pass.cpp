@@ -12,6 +12,8 @@ namespace {
 constexpr GLuint end_of_list = 0xffffffffu;
 constexpr size_t node_bytes = 3 * sizeof(GLuint);
 
+constexpr const char* resolve_program = "methods/kit/counting/lit_intervals.comp.glsl";
+
 }  // namespace
 
 SettingSpec gamma_samples_setting() {
@@ -54,6 +56,10 @@ std::string LitIntervalPass::defines() const {
   std::string d = lit_interval_defines() + "#define SAMPLES " + std::to_string(samples_) + "\n";
   if (loop_limit_) d += "#define LOOP_LIMIT " + std::to_string(gpu::software_loop_limit) + "\n";
   return d;
+}
+
+void LitIntervalPass::link_ahead(const SceneFrame& frame) const {
+  gpu::link_compute_ahead(resolve_program, frame.defines() + defines());
 }
 
 void LitIntervalPass::allocate_pool(size_t nodes) {
@@ -113,7 +119,7 @@ void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles
 
 void LitIntervalPass::resolve(const SceneFrame& frame, const EyeCounts& eye, const gpu::Texture& target) {
   const gpu::Program& program =
-      gpu::cached_compute_program("methods/kit/counting/lit_intervals.comp.glsl", frame.defines() + defines());
+      gpu::cached_compute_program(resolve_program, frame.defines() + defines());
   glUseProgram(program.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());

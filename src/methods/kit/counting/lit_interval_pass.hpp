@@ -39,6 +39,8 @@ public:
   explicit LitIntervalPass(const Settings& settings);
 
   void prepare() override;
+  // The resolve's program: the largest of the pass.
+  void link_ahead(const SceneFrame& frame) const override;
 
   // The crossings of the geometry's triangles (uploaded first if on the CPU)
   // with the frame's pixel rays, then Σ Γ over each light's lit intervals

@@ -41,6 +41,12 @@ void SceneFrame::prepare(const Scene& scene) {
 
 void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine,
                         Needs needs, PassTimer& timer) {
+  set_inputs(inputs, settings, engine, needs);
+  render_passes(engine, needs, timer);
+}
+
+void SceneFrame::set_inputs(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine,
+                            Needs needs) {
   check_frame_inputs(scene_, inputs);
   check_gobos(inputs, gobo_images_);
   geometry::camera_basis(inputs.camera);  // throws for a degenerate camera
@@ -51,6 +57,9 @@ void SceneFrame::render(const FrameInputs& inputs, const FrameSettings& settings
   grid_width_ = inputs.width;
   grid_height_ = inputs.height;
   upload_inputs(settings, engine, needs.shadows);
+}
+
+void SceneFrame::render_passes(const EngineFrame* engine, Needs needs, PassTimer& timer) {
   bind();
   {
     ScopedPass pass(timer, engine && engine->depth ? "depth" : "gbuffer");

@@ -60,6 +60,11 @@ public:
   };
   void render(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine, Needs needs,
               PassTimer& timer);
+  // render() in two halves: the inputs checked and uploaded, defines() set —
+  // where a method starts linking what it will use (GpuMethod::link_ahead) —
+  // then the passes.
+  void set_inputs(const FrameInputs& inputs, const FrameSettings& settings, const EngineFrame* engine, Needs needs);
+  void render_passes(const EngineFrame* engine, Needs needs, PassTimer& timer);
 
   // Binds the frame block, the scene SSBOs and the textures to binding::*.
   void bind() const;

@@ -51,9 +51,9 @@ void MarchPass::prepare() {
   glTextureSubImage2D(noise_.id(), 0, 0, 0, noise_size, noise_size, GL_RED, GL_FLOAT, offsets.data());
 }
 
-// The march's settings as constants of its program (march.comp.glsl).
-std::string MarchPass::defines() const {
-  std::string d = extra_defines_ + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n";
+// The frame's defines and the march's settings as constants of its program (march.comp.glsl).
+std::string MarchPass::defines(const kit::SceneFrame& frame) const {
+  std::string d = frame.defines() + extra_defines_ + "#define BINDING_JITTER " + std::to_string(jitter_unit) + "\n";
   d += "#define SAMPLING " + std::to_string(static_cast<int>(settings_.sampling)) + "\n";
   if (settings_.jitter != Jitter::none) d += "#define JITTER\n";
   if (settings_.normalized) d += "#define NORMALIZED\n";
@@ -61,10 +61,12 @@ std::string MarchPass::defines() const {
   return d;
 }
 
+void MarchPass::link_ahead(const kit::SceneFrame& frame) const { gpu::link_compute_ahead(program_, defines(frame)); }
+
 void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
   const int stride = settings_.block * settings_.block;
   const int own_samples = (settings_.steps + stride - 1) / stride;  // of pixel q = 0, the most
-  const gpu::Program& program = gpu::cached_compute_program(program_, frame.defines() + defines());
+  const gpu::Program& program = gpu::cached_compute_program(program_, defines(frame));
   glUseProgram(program.id());
   gpu::set_uniform(program, "steps", settings_.steps);
   gpu::set_uniform(program, "block", settings_.block);

@@ -47,6 +47,8 @@ public:
   // the frame must be bound (SceneFrame::bind), and what a method's own
   // program reads besides.
   void run(const kit::SceneFrame& frame, const gpu::Texture& target);
+  // Starts linking run()'s program for this frame's defines (GpuMethod::link_ahead).
+  void link_ahead(const kit::SceneFrame& frame) const;
 
   // With `normalized`: each pixel's light guide (rgb) and volume key (w,
   // march.glsl) from the last run (RGBA32F).
@@ -60,7 +62,7 @@ public:
   double light_samples() const { return light_samples_; }
 
 private:
-  std::string defines() const;
+  std::string defines(const kit::SceneFrame& frame) const;
 
   MarchSettings settings_;
   std::string program_, extra_defines_;

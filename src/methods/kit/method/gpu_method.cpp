@@ -85,7 +85,10 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
   PassTimer& timer = *timer_;
   // Shadow maps for the method, or for the surface term (its lights are shadowed whatever the method).
   const bool surface = inputs.surface && (!engine || engine->target.surface);
-  frame_.render(inputs, frame_settings_, engine, {uses_shadow_maps() || surface, surface}, timer);
+  const SceneFrame::Needs needs{uses_shadow_maps() || surface, surface};
+  frame_.set_inputs(inputs, frame_settings_, engine, needs);
+  link_ahead(frame_);
+  frame_.render_passes(engine, needs, timer);
   if (inputs.width != width_ || inputs.height != height_) {
     airlight_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, inputs.width, inputs.height);
     width_ = inputs.width;

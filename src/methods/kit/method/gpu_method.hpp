@@ -49,6 +49,11 @@ protected:
   // After the frame is prepared, with the context current: what depends only
   // on the scene (tables, lattice meshes, noise tiles).
   virtual void prepare_airlight(const Scene& scene) = 0;
+  // Once per frame, before any pass, once frame.defines() is this frame's:
+  // starts linking the programs the method's last passes will use
+  // (gpu::link_ahead), so that a new scene structure's first frame links them
+  // beside the frame's other passes.
+  virtual void link_ahead(const SceneFrame& frame) { (void)frame; }
   // Once per frame, before render_airlight: what depends on the frame but not
   // on the pixel grid (a shadow volume, a light volume mesh), which a frame at
   // reduced resolution renders on two grids.
