@@ -271,6 +271,8 @@ int cached_program_count() { return static_cast<int>(program_cache().size()); }
 
 int linked_ahead_count() { return taken_ahead; }
 
+int programs_linking() { return static_cast<int>(linking().size()); }
+
 void clear_program_cache() {
   for (auto& [key, linked] : linking()) linked.wait();  // deleted here, not while the worker links them
   linking().clear();

@@ -49,6 +49,9 @@ void link_compute_ahead(const std::string& name, const std::string& defines = ""
 int cached_program_count();
 // Of those, the ones a worker linked ahead (link_ahead).
 int linked_ahead_count();
+// Programs linked ahead that cached_program has not been asked for yet: 0
+// after a frame that used everything it linked ahead.
+int programs_linking();
 // Deletes every cached program (the context current, none of them in use): a
 // long run over scenes of many structures would otherwise keep all their
 // programs, hundreds of megabytes of llvmpipe's code per structure.

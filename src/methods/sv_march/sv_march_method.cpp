@@ -42,7 +42,10 @@ private:
     march_.prepare();
   }
 
-  void link_ahead(const kit::SceneFrame& frame) override { march_.link_ahead(frame); }
+  void link_ahead(const kit::SceneFrame& frame) override {
+    shell_.link_ahead(frame);  // built first
+    march_.link_ahead(frame);
+  }
   void build_frame(const kit::SceneFrame& frame, gpu::PassTimer& timer) override { shell_.build(frame, timer); }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {

@@ -19,7 +19,10 @@ public:
 
 private:
   void prepare_airlight(const Scene& scene) override;
-  void link_ahead(const SceneFrame& frame) override { pass_->link_ahead(frame); }
+  void link_ahead(const SceneFrame& frame) override {
+    geometry_->link_ahead(frame);  // built first
+    pass_->link_ahead(frame);
+  }
   void build_frame(const SceneFrame& frame, PassTimer& timer) override;
   void render_airlight(const SceneFrame& frame, const Texture& target, PassTimer& timer) override;
   bool uses_shadow_maps() const override { return geometry_->uses_shadow_maps(); }

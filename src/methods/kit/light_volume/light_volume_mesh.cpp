@@ -42,6 +42,28 @@ LightVolumeMesh::Kind kind_of(int shadow, LightType type) {
   return type == LightType::directional ? Kind::directional : Kind::spot;
 }
 
+// The build's programs for a light of `kind`, in the order build_light runs them.
+std::vector<const char*> build_programs(LightVolumeMesh::Kind kind, LightVolumeMesh::Depth depth) {
+  const bool shell = depth == LightVolumeMesh::Depth::shell, cube = kind == LightVolumeMesh::Kind::cube;
+  std::vector<const char*> programs;
+  if (shell) programs.push_back(cell_depths);
+  programs.push_back(grid_vertices);
+  if (shell && cube) programs.push_back(seam_vertices);  // the shell's cube edges
+  programs.push_back(grid_triangles);
+  if (!shell && !cube) programs.push_back(extra_vertices);  // the apex, or the far ring, skirt and cap
+  if (!(shell && cube)) programs.push_back(extra_triangles);  // a cube's shell has no border
+  programs.push_back(eye_count);
+  return programs;
+}
+
+// Cells too wide for one invocation's loop (llvmpipe ends an invocation's
+// loops silently after 65535 iterations) are split into sub-blocks of
+// cell_block² texels: how many per side, for a grid of r cells over a map of s texels.
+int sub_blocks_of(int r, int s) {
+  const int span = (s + r - 1) / r + 1;
+  return (span + cell_block - 1) / cell_block;
+}
+
 GLsizei triangles_of(LightVolumeMesh::Kind kind, int r, LightVolumeMesh::Depth depth) {
   const bool shell = depth == LightVolumeMesh::Depth::shell;
   switch (kind) {
@@ -127,7 +149,7 @@ void LightVolumeMesh::build_lights(const SceneFrame& frame) {
     cubes = cubes || kind == Kind::cube;
   }
   map_size_ = maps || cubes ? frame.shadow_resolution() : 0;
-  grid_ = std::max(1, std::min(resolution_, map_size_));
+  grid_ = grid_for(map_size_);
   if (resolution_ > map_size_ && map_size_ > 0 && map_size_ != clamped_to_) {  // said once per map size
     clamped_to_ = map_size_;
     warn("volume_resolution", std::to_string(resolution_) + " is above the shadow maps' " + std::to_string(map_size_) +
@@ -155,6 +177,32 @@ void LightVolumeMesh::build_lights(const SceneFrame& frame) {
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
+int LightVolumeMesh::grid_for(int map_size) const { return std::max(1, std::min(resolution_, map_size)); }
+
+// What `program` is compiled with for a light of `kind`; `split`: the cells
+// are reduced in sub-blocks (only the cell depths depend on it).
+std::string LightVolumeMesh::defines(Kind kind, const char* program, bool split) const {
+  const char* kinds[] = {"", "KIND_SPOT", "KIND_CUBE", "KIND_DIRECTIONAL"};
+  std::string d = binding_defines() + "#define BINDING_VOLUME_EXTRAS " + std::to_string(extras_binding) +
+                  "\n#define BINDING_VOLUME_RECORDS " + std::to_string(records_binding) +
+                  "\n#define BINDING_VOLUME_EYE " + std::to_string(eye_binding) + "\n#define VOLUME_KIND " +
+                  kinds[static_cast<int>(kind)] + "\n#define DEPTH_MODE " + std::to_string(static_cast<int>(depth_)) +
+                  "\n";
+  return program == cell_depths && split ? d + "#define CELL_SPLIT\n" : d;
+}
+
+void LightVolumeMesh::link_ahead(const SceneFrame& frame) const {
+  const int s = frame.shadow_resolution(), r = grid_for(s);
+  std::vector<Kind> kinds;
+  for (size_t i = 0; i < frame.shadow_kinds().size(); ++i) {
+    const Kind kind = kind_of(frame.shadow_kinds()[i], frame.inputs().lights[i].type);
+    if (kind == Kind::none || std::find(kinds.begin(), kinds.end(), kind) != kinds.end()) continue;
+    kinds.push_back(kind);
+    for (const char* program : build_programs(kind, depth_))
+      gpu::link_compute_ahead(program, defines(kind, program, sub_blocks_of(r, s) > 1));
+  }
+}
+
 void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame) {
   const int r = grid_, s = map_size_, faces = kind == Kind::cube ? 6 : 1;
   const FrameInputs& in = frame.inputs();
@@ -169,21 +217,14 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
     far_ring = far_depth + 1e-3 * visible;
     cap = depth - visible;
   }
-  // Cells too wide for one invocation's loop (llvmpipe ends an invocation's
-  // loops silently after 65535 iterations) are split into 64² sub-blocks.
-  const int span = (s + r - 1) / r + 1, sub_blocks = (span + cell_block - 1) / cell_block;
+  const int sub_blocks = sub_blocks_of(r, s);
   const bool split = sub_blocks > 1;
-
-  const char* kinds[] = {"", "KIND_SPOT", "KIND_CUBE", "KIND_DIRECTIONAL"};
-  const std::string common = binding_defines() + "#define BINDING_VOLUME_EXTRAS " + std::to_string(extras_binding) +
-                             "\n#define BINDING_VOLUME_RECORDS " + std::to_string(records_binding) +
-                             "\n#define BINDING_VOLUME_EYE " + std::to_string(eye_binding) + "\n#define VOLUME_KIND " +
-                             kinds[static_cast<int>(kind)] + "\n#define DEPTH_MODE " +
-                             std::to_string(static_cast<int>(depth_)) + "\n";
+  const std::vector<const char*> programs = build_programs(kind, depth_);
+  const auto runs = [&](const char* program) {
+    return std::find(programs.begin(), programs.end(), program) != programs.end();
+  };
   auto use = [&](const char* program) -> const gpu::Program& {
-    // Only the cell depths depend on the split.
-    const bool cells_split = program == cell_depths && split;
-    const gpu::Program& p = gpu::cached_compute_program(program, cells_split ? common + "#define CELL_SPLIT\n" : common);
+    const gpu::Program& p = gpu::cached_compute_program(program, defines(kind, program, split));
     glUseProgram(p.id());
     gpu::set_uniform(p, "light_index", light);
     gpu::set_uniform(p, "grid", r);
@@ -213,7 +254,7 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
     }
   };
   const GLuint cells = static_cast<GLuint>(faces * r * r);
-  if (depth_ != Depth::texel) {
+  if (runs(cell_depths)) {
     if (split) {  // atomics from every sub-block: start from the empty interval
       const GLuint empty_low = 0xffffffffu, empty_high = 0u;
       glClearTexImage(cell_low_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty_low);
@@ -222,22 +263,19 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
     dispatch_items(use(cell_depths), 0, cells * static_cast<GLuint>(sub_blocks * sub_blocks));
   }
   dispatch_items(use(grid_vertices), 0, static_cast<GLuint>(faces * (r + 1) * (r + 1)));
-  const bool shell = depth_ == Depth::shell;
-  if (kind == Kind::cube && shell) dispatch_items(use(seam_vertices), 0, static_cast<GLuint>(6 * 4 * r));
+  const bool shell = depth_ == Depth::shell, spot = kind == Kind::spot;
+  if (runs(seam_vertices)) dispatch_items(use(seam_vertices), 0, static_cast<GLuint>(6 * 4 * r));
   const GLsizei first = ranges_[static_cast<size_t>(light)].first;
   const GLuint per_cell = shell ? 4 : 6;  // shell: two per cell and surface; texel: the top and two walls
   write_records(use(grid_triangles), first, cells, per_cell);
   const GLsizei extras_first = first + static_cast<GLsizei>(per_cell * cells);
-  if (shell) {
-    if (kind != Kind::cube)  // the strips between the borders
-      write_records(use(extra_triangles), extras_first, static_cast<GLuint>(4 * r), 2);
-  } else if (kind == Kind::cube) {  // the walls across the cube's edges
-    write_records(use(extra_triangles), extras_first, static_cast<GLuint>(6 * 4 * r), 2);
-  } else {
-    const bool spot = kind == Kind::spot;
-    dispatch_items(use(extra_vertices), 0, spot ? 1u : static_cast<GLuint>(4 * r + 8));
-    write_records(use(extra_triangles), extras_first,
-                  spot ? static_cast<GLuint>(12 * r) : static_cast<GLuint>(20 * r + 14), 1);
+  if (runs(extra_vertices)) dispatch_items(use(extra_vertices), 0, spot ? 1u : static_cast<GLuint>(4 * r + 8));
+  if (runs(extra_triangles)) {
+    // shell: the strips between the borders; cube: the walls across its
+    // edges; spot: the sides to the apex; directional: walls, skirt and cap.
+    const bool cube = kind == Kind::cube;
+    const int items = shell ? 4 * r : cube ? 6 * 4 * r : spot ? 12 * r : 20 * r + 14;
+    write_records(use(extra_triangles), extras_first, static_cast<GLuint>(items), shell || cube ? 2 : 1);
   }
   dispatch_items(use(eye_count), 0, 1);
 }

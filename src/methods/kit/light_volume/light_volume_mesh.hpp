@@ -113,6 +113,8 @@ public:
   // leaves image units 0–2 and storage bindings from
   // binding::first_free_storage bound to its own objects.
   void build(const SceneFrame& frame, gpu::PassTimer& timer) override;
+  // Starts linking the build's programs for the frame's kinds of light.
+  void link_ahead(const SceneFrame& frame) const override;
 
   CountedTriangles triangles() const override { return {{}, &triangles_.buffer(), static_cast<size_t>(triangle_count_)}; }
   GLsizei triangle_count() const { return triangle_count_; }  // this frame's, all lights
@@ -140,6 +142,8 @@ public:
 private:
   void build_lights(const SceneFrame& frame);
   void build_light(int light, Kind kind, const SceneFrame& frame);
+  int grid_for(int map_size) const;
+  std::string defines(Kind kind, const char* program, bool split) const;
   void allocate(int grid, int layers, GLsizei triangles, int lights);
 
   int resolution_;

@@ -6,6 +6,7 @@
 // closed caster, a floor): a scene of every light type and a bounded volume
 // costs sv_march alone 100 s of program compiling on llvmpipe with Mesa's
 // shader cache off, against 7 s here, and each method's own tests cover those.
+#include "gpu/program.hpp"
 #include "methods/kit/testing/test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -51,6 +52,8 @@ TEST_P(EveryMethod, RendersAFrameThroughEveryPass) {
   EXPECT_GT(mean(frame.surface), 0.01);
   if (info.name != "reference") {
     EXPECT_FALSE(frame.times.empty());  // the GPU methods time each pass they run
+    // What a frame links ahead has the defines it then asks for (GpuMethod::link_ahead).
+    EXPECT_EQ(gpu::programs_linking(), 0) << "a program linked ahead was not the one the frame used";
   }
 }
 
