@@ -51,13 +51,14 @@ ConformingSet::ConformingSet(const std::vector<BeamPolygon>& pieces, double tole
 }
 
 std::vector<int> ConformingSet::conforming(size_t k) const {
-  std::vector<int> out;
+  std::vector<int> out, stack;
+  std::vector<std::pair<double, int>> found;
   const std::vector<int>& loop = loops_[k];
   for (size_t e = 0; e < loop.size(); ++e) {
     const int a = loop[e], b = loop[(e + 1) % loop.size()];
     if (a == b) continue;
     out.push_back(a);
-    for (int m : on_edge(a, b)) out.push_back(m);
+    on_edge(a, b, out, found, stack);
   }
   return out;
 }
@@ -120,11 +121,12 @@ int ConformingSet::build(int begin, int end) {
 // from the k-d tree's boxes the segment passes within the tolerance of. A grid's cells
 // over the segment's box made a long edge (a floor piece's, across a million small
 // pieces' cells) test every vertex: quadratic (docs/decisions.md "A million triangles").
-std::vector<int> ConformingSet::on_edge(int a, int b) const {
+void ConformingSet::on_edge(int a, int b, std::vector<int>& out, std::vector<std::pair<double, int>>& found,
+                            std::vector<int>& stack) const {
   const glm::dvec3 p = vertices_[a], d = vertices_[b] - p;
   const double length2 = glm::dot(d, d);
-  std::vector<std::pair<double, int>> found;
-  std::vector<int> stack;
+  found.clear();
+  stack.clear();
   if (!nodes_.empty()) stack.push_back(0);
   double s = 0.0;
   while (!stack.empty()) {
@@ -142,9 +144,7 @@ std::vector<int> ConformingSet::on_edge(int a, int b) const {
     }
   }
   std::sort(found.begin(), found.end());
-  std::vector<int> ids;
-  for (const auto& f : found) ids.push_back(f.second);
-  return ids;
+  for (const auto& f : found) out.push_back(f.second);
 }
 
 }  // namespace airlight::geometry

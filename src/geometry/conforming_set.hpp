@@ -43,7 +43,9 @@ private:
   Key key(const glm::dvec3& x) const;
   int weld(const glm::dvec3& v);
   int build(int begin, int end);
-  std::vector<int> on_edge(int a, int b) const;
+  // Appends to `out`; `found` and `stack` are the search's, kept between calls (no allocation per edge).
+  void on_edge(int a, int b, std::vector<int>& out, std::vector<std::pair<double, int>>& found,
+               std::vector<int>& stack) const;
   bool near_edge(int id, const glm::dvec3& p, const glm::dvec3& d, double length2, double& s) const;
 
   double tolerance_, cell_ = 1.0;

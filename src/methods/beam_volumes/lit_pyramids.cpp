@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
@@ -80,7 +80,11 @@ void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& 
   const bool directional = light.type == LightType::directional;
   const glm::dvec4 apex = directional ? glm::dvec4(-glm::dvec3(light.direction), 0.0) : glm::dvec4(glm::dvec3(light.position), 1.0);
   std::vector<std::vector<int>> loops;
-  std::map<std::pair<int, int>, int> edges;  // directed, of the bases wound away from the light: how many
+  // The directed edges of the bases wound away from the light, sorted: an
+  // edge's count is the length of its run (a map of counts allocated a node
+  // per edge, a large part of the build on toth_hall: docs/decisions.md).
+  std::vector<std::uint64_t> edges;
+  const auto key = [](int a, int b) { return std::uint64_t(std::uint32_t(a)) << 32 | std::uint32_t(b); };
   for (size_t k = 0; k < set.size(); ++k) {
     std::vector<int> loop = set.conforming(k);
     if (loop.size() < 3) continue;
@@ -89,9 +93,14 @@ void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& 
     for (size_t e = 0; e < loop.size(); ++e) normal += glm::cross(set.vertex(loop[e]) - v0, set.vertex(loop[(e + 1) % loop.size()]) - v0);
     const glm::dvec3 away = directional ? glm::dvec3(light.direction) : v0 - glm::dvec3(light.position);
     if (glm::dot(normal, away) < 0.0) std::reverse(loop.begin(), loop.end());
-    for (size_t e = 0; e < loop.size(); ++e) ++edges[{loop[e], loop[(e + 1) % loop.size()]}];
+    for (size_t e = 0; e < loop.size(); ++e) edges.push_back(key(loop[e], loop[(e + 1) % loop.size()]));
     loops.push_back(std::move(loop));
   }
+  std::sort(edges.begin(), edges.end());
+  const auto count = [&](int a, int b) {
+    const auto run = std::equal_range(edges.begin(), edges.end(), key(a, b));
+    return run.second - run.first;
+  };
   const auto at = [&](int id) { return glm::dvec4(set.vertex(id), 1.0); };
   std::vector<PyramidSide> sides;
   for (const std::vector<int>& loop : loops) {
@@ -108,8 +117,7 @@ void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& 
       // Cancelled here where exactly two pyramids share the side (pieces that
       // overlap by ε as seen from the light can meet an edge more often); the
       // rest are summed plane by plane.
-      const auto reverse = edges.find({b, a});
-      if (reverse == edges.end() || reverse->second != 1 || edges[{a, b}] != 1) sides.push_back({a, b});
+      if (count(b, a) != 1 || count(a, b) != 1) sides.push_back({a, b});
     }
   }
   for (const WeightedTriangle& t : summed_sides(set, sides, apex, reach, epsilon))
