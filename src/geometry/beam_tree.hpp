@@ -111,6 +111,7 @@ private:
   void admit(const BeamPolygon& polygon, size_t index, std::vector<Piece>& pieces);
   bool edge_on(std::span<const glm::dvec3> corners, const Plane& plane, double rounding) const;
   std::vector<Piece> sort_front_to_back(std::vector<Piece> pieces) const;
+  std::vector<Piece> sort_set(std::vector<Piece> pieces) const;
   void divide(const std::vector<Piece>& set, std::vector<Piece>& near, std::vector<Piece>& on,
               std::vector<Piece>& far) const;
   Plane median_plane(const std::vector<Piece>& set) const;

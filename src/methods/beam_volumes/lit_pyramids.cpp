@@ -4,6 +4,8 @@
 #include "methods/kit/frame/model_of.hpp"
 #include "methods/kit/frame/view_reach.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -85,8 +87,10 @@ void LitPyramids::add_pyramids(const geometry::ConformingSet& set, const Light& 
   // per edge, a large part of the build on toth_hall: docs/decisions.md).
   std::vector<std::uint64_t> edges;
   const auto key = [](int a, int b) { return std::uint64_t(std::uint32_t(a)) << 32 | std::uint32_t(b); };
+  std::vector<std::vector<int>> conformed(set.size());  // queries of the set alone: on every core
+  tbb::parallel_for(size_t{0}, set.size(), [&](size_t k) { conformed[k] = set.conforming(k); });
   for (size_t k = 0; k < set.size(); ++k) {
-    std::vector<int> loop = set.conforming(k);
+    std::vector<int> loop = std::move(conformed[k]);
     if (loop.size() < 3) continue;
     const glm::dvec3 v0 = set.vertex(loop[0]);
     glm::dvec3 normal(0.0);  // Newell's: robust with the collinear vertices the splits insert
