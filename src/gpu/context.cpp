@@ -102,12 +102,15 @@ Context::Context() {
   glDebugMessageCallback(debug_callback, this);
 }
 
-std::function<void()> Context::worker_binding() {
-  if (!owned_) return {};
+Context::Worker Context::worker() {
+  if (!owned_) return given_;
   if (worker_ == EGL_NO_CONTEXT) worker_ = create_context(display_, context_);
   if (worker_ == EGL_NO_CONTEXT) return {};
-  return [display = display_, worker = worker_] { eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, worker); };
+  return {[display = display_, worker = worker_] { eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, worker); },
+          [display = display_] { eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }};
 }
+
+void Context::give_worker(Worker worker) { given_ = std::move(worker); }
 
 Context::~Context() {
   if (!owned_) return;

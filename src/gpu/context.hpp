@@ -29,12 +29,20 @@ public:
 
   const std::string& renderer() const { return renderer_; }
 
-  // Makes a context that shares this one's objects current on the calling
-  // thread, a worker's that links programs ahead (program.hpp's link_ahead).
-  // Returns an empty function when there is none: an adopted (engine's)
-  // context, whose platform airlight does not own. The shared context is
-  // created on the first call, which must come from this context's thread.
-  std::function<void()> worker_binding();
+  // How a worker thread that links programs ahead (program.hpp's link_ahead)
+  // makes a context sharing this one's objects current (`bind`), and lets it
+  // go before it ends (`release`). An empty `bind`: there is none, as for an
+  // adopted context whose owner gave none (give_worker). The headless
+  // context's shared context is created on the first call, which must come
+  // from this context's thread.
+  struct Worker {
+    std::function<void()> bind, release;
+  };
+  Worker worker();
+  // An adopted context's worker: the owner of the windowing system (the
+  // viewer) creates a context sharing this one's objects; it keeps it until
+  // gpu::stop_linking() has returned. An empty Worker takes it back.
+  void give_worker(Worker worker);
 
   // Throws InputError("frame", "size") when a frame of width × height cannot be
   // one framebuffer of this implementation: beyond its texture, framebuffer or
@@ -55,6 +63,7 @@ private:
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
   EGLContext worker_ = EGL_NO_CONTEXT;
+  Worker given_;  // an adopted context's (give_worker)
   std::string renderer_;
   struct Limit {
     int side;

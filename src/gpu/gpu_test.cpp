@@ -247,6 +247,22 @@ TEST(Gpu, CompileErrorsOnTheWorkerAreThrownWhereTheProgramIsAskedFor) {
   EXPECT_EQ(linked_ahead_count(), ahead) << "cleared, it was linked again in place";
 }
 
+// stop_linking ends the worker after what it was asked to link (the viewer
+// calls it before its worker's window goes); the next link_ahead starts another.
+TEST(Gpu, StoppedWorkerFinishesItsLinksAndTheNextLinkStartsAnother) {
+  Context& context = Context::headless();
+  const int ahead = linked_ahead_count();
+  link_compute_ahead("gpu/test_shaders/fill.comp.glsl", "#define SCALE 5.0\n");
+  stop_linking();
+  const Program& first = cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 5.0\n");
+  link_compute_ahead("gpu/test_shaders/fill.comp.glsl", "#define SCALE 6.0\n");
+  const Program& second = cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 6.0\n");
+  EXPECT_EQ(linked_ahead_count(), ahead + 2);
+  EXPECT_EQ(fill(first)[3], 45.0f);
+  EXPECT_EQ(fill(second)[3], 54.0f);
+  context.check("stop linking");
+}
+
 TEST(Gpu, GlErrorsBecomeFailures) {
   Context& context = Context::headless();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 987654);  // not a buffer name: GL_INVALID_OPERATION/VALUE

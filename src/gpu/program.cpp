@@ -169,24 +169,35 @@ std::string program_key(std::initializer_list<Stage> stages, const std::string& 
 // generates at the first draw on the drawing thread, so only the link moves.
 class Linker {
 public:
-  // The process's linker; nullptr when the context has no worker to give.
+  // The linker of the current context's worker, started on first use;
+  // nullptr when the context has no worker.
   static Linker* instance() {
-    static Linker* linker = [] {
-      std::function<void()> bind = Context::current().worker_binding();
-      if (!bind) return static_cast<Linker*>(nullptr);
-      auto* made = new Linker(std::move(bind));  // never destroyed, as the context
+    if (!running()) {
+      Context::Worker worker = Context::current().worker();
+      if (!worker.bind) return nullptr;
+      running() = new Linker(std::move(worker));
       // A frame that threw may leave a link running: the process's exit waits
       // for it rather than tear the driver down under it (Mesa's own exit
       // handlers, registered with the context before this, run after).
-      std::atexit([] { instance()->wait_idle(); });
-      return made;
-    }();
-    return linker;
+      static const bool waits_at_exit = [] { return std::atexit([] { stop(); }) == 0; }();
+      (void)waits_at_exit;
+    }
+    return running();
   }
 
-  void wait_idle() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    idle_.wait(lock, [this] { return jobs_.empty() && !running_; });
+  // Ends the worker after what it was asked to link.
+  static void stop() {
+    delete running();
+    running() = nullptr;
+  }
+
+  ~Linker() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
+    }
+    ready_.notify_one();
+    thread_.join();
   }
 
   std::future<Program> link(std::vector<Stage> stages, std::string defines) {
@@ -206,28 +217,31 @@ public:
   }
 
 private:
-  explicit Linker(std::function<void()> bind) {
-    std::thread([this, bind = std::move(bind)] {
-      bind();
-      for (;;) {
-        std::unique_lock<std::mutex> lock(mutex_);
-        ready_.wait(lock, [this] { return !jobs_.empty(); });
-        std::packaged_task<Program()> job = std::move(jobs_.front());
-        jobs_.pop_front();
-        running_ = true;
-        lock.unlock();
-        job();  // a compile or link error is the future's, thrown where the program is asked for
-        lock.lock();
-        running_ = false;
-        idle_.notify_all();
-      }
-    }).detach();
+  static Linker*& running() {
+    static Linker* linker = nullptr;
+    return linker;
   }
 
+  explicit Linker(Context::Worker worker)
+      : thread_([this, worker = std::move(worker)] {
+          worker.bind();
+          for (;;) {
+            std::unique_lock<std::mutex> lock(mutex_);
+            ready_.wait(lock, [this] { return !jobs_.empty() || stopping_; });
+            if (jobs_.empty()) break;
+            std::packaged_task<Program()> job = std::move(jobs_.front());
+            jobs_.pop_front();
+            lock.unlock();
+            job();  // a compile or link error is the future's, thrown where the program is asked for
+          }
+          worker.release();
+        }) {}
+
   std::mutex mutex_;
-  std::condition_variable ready_, idle_;
+  std::condition_variable ready_;
   std::deque<std::packaged_task<Program()>> jobs_;
-  bool running_ = false;
+  bool stopping_ = false;
+  std::thread thread_;  // last: it starts once everything it uses exists
 };
 
 // Programs a Linker is linking, by key (this thread's, as the cache).
@@ -272,6 +286,8 @@ int cached_program_count() { return static_cast<int>(program_cache().size()); }
 int linked_ahead_count() { return taken_ahead; }
 
 int programs_linking() { return static_cast<int>(linking().size()); }
+
+void stop_linking() { Linker::stop(); }
 
 void clear_program_cache() {
   for (auto& [key, linked] : linking()) linked.wait();  // deleted here, not while the worker links them

@@ -52,6 +52,10 @@ int linked_ahead_count();
 // Programs linked ahead that cached_program has not been asked for yet: 0
 // after a frame that used everything it linked ahead.
 int programs_linking();
+// Ends link_ahead's worker thread once it has linked what it was asked to:
+// before the context it binds (Context::give_worker) is destroyed. The next
+// link_ahead starts another for the current context.
+void stop_linking();
 // Deletes every cached program (the context current, none of them in use): a
 // long run over scenes of many structures would otherwise keep all their
 // programs, hundreds of megabytes of llvmpipe's code per structure.

@@ -5,6 +5,7 @@
 #include "app/output_check.hpp"
 #include "core/metrics.hpp"
 #include "core/image_io.hpp"
+#include "gpu/context.hpp"
 #include "gpu/program.hpp"
 #include "view/camera_control.hpp"
 
@@ -72,6 +73,17 @@ GLFWwindow* open_window(int width, int height) {
   return window;
 }
 
+// A hidden window whose context shares `window`'s objects, for the thread that
+// links programs ahead (gpu::link_ahead): a new method's first frame links its
+// largest programs beside its earlier passes. nullptr if the system gives none:
+// programs are then linked in place.
+GLFWwindow* open_worker_window(GLFWwindow* window) {
+  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+  GLFWwindow* worker = glfwCreateWindow(1, 1, "airlight worker", nullptr, window);
+  glfwWindowHint(GLFW_VISIBLE, GLFW_TRUE);
+  return worker;
+}
+
 // An image as an RGBA32F texture (GL's rows bottom first).
 gpu::Texture upload(const Image& image) {
   gpu::Texture texture = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, image.width, image.height);
@@ -127,6 +139,9 @@ Viewer::Viewer(ViewOptions options)
   const Settings settings = app::method_settings(info, options_.assignments);
   window_ = open_window(options_.width, options_.height);
   use_current_gl_context();
+  if ((worker_window_ = open_worker_window(window_)))
+    gpu::Context::current().give_worker({[w = worker_window_] { glfwMakeContextCurrent(w); },
+                                         [] { glfwMakeContextCurrent(nullptr); }});
   display_ = std::make_unique<Display>();
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -148,6 +163,9 @@ Viewer::~Viewer() {
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
+  gpu::stop_linking();  // the worker lets its context go before its window goes
+  gpu::Context::current().give_worker({});
+  if (worker_window_) glfwDestroyWindow(worker_window_);
   glfwDestroyWindow(window_);
   glfwTerminate();
 }

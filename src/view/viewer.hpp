@@ -104,6 +104,7 @@ private:
   Scene scene_;  // as loaded: what methods are prepared with and the camera resets to
   FrameInputs inputs_;
   GLFWwindow* window_ = nullptr;
+  GLFWwindow* worker_window_ = nullptr;  // its context links programs ahead (open_worker_window)
   std::unique_ptr<Display> display_;
   std::unique_ptr<Targets> full_, reduced_;
   const Targets* shown_ = nullptr;
