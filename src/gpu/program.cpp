@@ -163,6 +163,12 @@ std::string program_key(std::initializer_list<Stage> stages, const std::string& 
   return key;
 }
 
+// A program linked on the worker. A type of this file alone: the future's
+// and the task's types built on it stay out of libairlight's exports.
+struct Linked {
+  Program program;
+};
+
 // One thread that compiles and links in a context sharing the caller's
 // objects. llvmpipe spends about half of a large program's compile in the
 // link (GLSL to NIR, docs/decisions.md); the other half, the machine code, it
@@ -200,14 +206,14 @@ public:
     thread_.join();
   }
 
-  std::future<Program> link(std::vector<Stage> stages, std::string defines) {
-    std::packaged_task<Program()> job([stages = std::move(stages), defines = std::move(defines)] {
+  std::future<Linked> link(std::vector<Stage> stages, std::string defines) {
+    std::packaged_task<Linked()> job([stages = std::move(stages), defines = std::move(defines)] {
       Program program(glCreateProgram());
       link_into(program, stages, defines);
       glFinish();  // the link is complete before another context uses the program
-      return program;
+      return Linked{std::move(program)};
     });
-    std::future<Program> linked = job.get_future();
+    std::future<Linked> linked = job.get_future();
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       jobs_.push_back(std::move(job));
@@ -229,7 +235,7 @@ private:
             std::unique_lock<std::mutex> lock(mutex_);
             ready_.wait(lock, [this] { return !jobs_.empty() || stopping_; });
             if (jobs_.empty()) break;
-            std::packaged_task<Program()> job = std::move(jobs_.front());
+            std::packaged_task<Linked()> job = std::move(jobs_.front());
             jobs_.pop_front();
             lock.unlock();
             job();  // a compile or link error is the future's, thrown where the program is asked for
@@ -239,14 +245,14 @@ private:
 
   std::mutex mutex_;
   std::condition_variable ready_;
-  std::deque<std::packaged_task<Program()>> jobs_;
+  std::deque<std::packaged_task<Linked()>> jobs_;
   bool stopping_ = false;
   std::thread thread_;  // last: it starts once everything it uses exists
 };
 
 // Programs a Linker is linking, by key (this thread's, as the cache).
-std::map<std::string, std::future<Program>>& linking() {
-  static auto* pending = new std::map<std::string, std::future<Program>>;
+std::map<std::string, std::future<Linked>>& linking() {
+  static auto* pending = new std::map<std::string, std::future<Linked>>;
   return *pending;
 }
 
@@ -271,10 +277,10 @@ const Program& cached_program(std::initializer_list<Stage> stages, const std::st
   if (it != cache.end()) return it->second;
   const auto pending = linking().find(key);
   if (pending == linking().end()) return cache.emplace(key, make_program(stages, defines)).first->second;
-  std::future<Program> linked = std::move(pending->second);
+  std::future<Linked> linked = std::move(pending->second);
   linking().erase(pending);
   ++taken_ahead;
-  return cache.emplace(key, linked.get()).first->second;
+  return cache.emplace(key, linked.get().program).first->second;
 }
 
 const Program& cached_compute_program(const std::string& name, const std::string& defines) {
