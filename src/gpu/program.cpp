@@ -176,12 +176,16 @@ struct Linked {
 class Linker {
 public:
   // The linker of the current context's worker, started on first use;
-  // nullptr when the context has no worker.
+  // nullptr when the context has no worker. A linker of another context (the
+  // headless one, before an engine's was adopted) is stopped: its programs
+  // would be another share group's.
   static Linker* instance() {
+    Context& context = Context::current();
+    if (running() && running()->context_ != &context) stop();
     if (!running()) {
-      Context::Worker worker = Context::current().worker();
+      Context::Worker worker = context.worker();
       if (!worker.bind) return nullptr;
-      running() = new Linker(std::move(worker));
+      running() = new Linker(context, std::move(worker));
       // A frame that threw may leave a link running: the process's exit waits
       // for it rather than tear the driver down under it (Mesa's own exit
       // handlers, registered with the context before this, run after).
@@ -228,8 +232,8 @@ private:
     return linker;
   }
 
-  explicit Linker(Context::Worker worker)
-      : thread_([this, worker = std::move(worker)] {
+  Linker(const Context& context, Context::Worker worker)
+      : context_(&context), thread_([this, worker = std::move(worker)] {
           worker.bind();
           for (;;) {
             std::unique_lock<std::mutex> lock(mutex_);
@@ -243,6 +247,7 @@ private:
           worker.release();
         }) {}
 
+  const Context* context_;
   std::mutex mutex_;
   std::condition_variable ready_;
   std::deque<std::packaged_task<Linked()>> jobs_;
@@ -279,8 +284,9 @@ const Program& cached_program(std::initializer_list<Stage> stages, const std::st
   if (pending == linking().end()) return cache.emplace(key, make_program(stages, defines)).first->second;
   std::future<Linked> linked = std::move(pending->second);
   linking().erase(pending);
+  Linked taken = linked.get();  // throws the worker's compile or link error
   ++taken_ahead;
-  return cache.emplace(key, linked.get().program).first->second;
+  return cache.emplace(key, std::move(taken.program)).first->second;
 }
 
 const Program& cached_compute_program(const std::string& name, const std::string& defines) {
