@@ -13,6 +13,7 @@ namespace airlight::methods {
 namespace {
 
 constexpr GLuint sun_table_unit = kit::binding::first_free_texture;  // BINDING_SUN_TABLE
+constexpr const char* program = "methods/analytic/analytic.comp.glsl";
 
 std::vector<SettingSpec> analytic_settings() {
   using T = SettingSpec::Type;
@@ -47,11 +48,16 @@ private:
                         table.texels.data());
   }
 
+  std::string defines(const kit::SceneFrame& frame) const {
+    return frame.defines() + "#define BINDING_SUN_TABLE " + std::to_string(sun_table_unit) + "\n" +
+           (table_ ? "#define SUN_F_TABLE\n" : "");
+  }
+
+  void link_ahead(const kit::SceneFrame& frame) override { gpu::link_compute_ahead(program, defines(frame)); }
+
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     gpu::ScopedPass pass(timer, "airlight");
-    const std::string defines = frame.defines() + "#define BINDING_SUN_TABLE " +
-                                std::to_string(sun_table_unit) + "\n" + (table_ ? "#define SUN_F_TABLE\n" : "");
-    glUseProgram(gpu::cached_compute_program("methods/analytic/analytic.comp.glsl", defines).id());
+    glUseProgram(gpu::cached_compute_program(program, defines(frame)).id());
     if (table_) glBindTextureUnit(sun_table_unit, table_texture_.id());
     glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     frame.dispatch_pixels();
