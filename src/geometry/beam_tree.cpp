@@ -32,6 +32,7 @@ namespace airlight::geometry {
 struct BeamTree::Vertex {
   glm::dvec3 x;
   bool cut = false;
+  double reach = 0.0;  // |x − L| for a point light, which beam_tolerance scales by: once per corner, not per plane
 };
 
 // A convex piece of the input polygon surfaces_[surface].
@@ -165,7 +166,7 @@ void BeamTree::admit(const BeamPolygon& polygon, size_t index, std::vector<Piece
   surfaces_.push_back({faces_light ? plane : Plane{-plane.n, -plane.d}, faces_light, polygon.source});
   Piece& piece = pieces.emplace_back();
   piece.surface = static_cast<int>(surfaces_.size() - 1);
-  for (const glm::dvec3& v : corners) piece.loop.push_back({v});
+  for (const glm::dvec3& v : corners) piece.loop.push_back(vertex(v, false));
 }
 
 // Whether the polygon's shadow is at most ε thick within R: seen along D, the polygon is
@@ -409,7 +410,7 @@ BeamTree::Where BeamTree::sides(const Loop& loop, const Plane& plane, bool beam,
   bool front = false, back = false;
   for (size_t i = 0; i < loop.size(); ++i) {
     const double d = plane.distance(loop[i].x);
-    const double tolerance = beam ? beam_tolerance(loop[i].x) : epsilon_;
+    const double tolerance = beam ? beam_tolerance(loop[i]) : epsilon_;
     distance[i] = std::abs(d) <= tolerance ? 0.0 : d;
     front = front || distance[i] > 0.0;
     back = back || distance[i] < 0.0;
@@ -420,16 +421,21 @@ BeamTree::Where BeamTree::sides(const Loop& loop, const Plane& plane, bool beam,
 // Sutherland–Hodgman: the part of a convex loop on `side` (+1 front, −1 back) of the plane,
 // given sides' distances; corners in the plane belong to both parts. An edge of the part
 // that is a piece of an edge of the loop keeps its `cut`; one along the plane gets `cut`.
-void BeamTree::clip(const Loop& in, const std::vector<double>& distance, int side, bool cut, Loop& out) {
+void BeamTree::clip(const Loop& in, const std::vector<double>& distance, int side, bool cut, Loop& out) const {
   out.clear();
   for (size_t i = 0; i < in.size(); ++i) {
     const size_t j = (i + 1) % in.size();
     const double di = side * distance[i], dj = side * distance[j];
-    if (di >= 0.0) out.push_back({in[i].x, di > 0.0 || dj > 0.0 ? in[i].cut : (dj == 0.0 && in[i].cut) || cut});
+    if (di >= 0.0)
+      out.push_back({in[i].x, di > 0.0 || dj > 0.0 ? in[i].cut : (dj == 0.0 && in[i].cut) || cut, in[i].reach});
     if (di * dj < 0.0)
-      out.push_back({in[i].x + distance[i] / (distance[i] - distance[j]) * (in[j].x - in[i].x),
-                     dj > 0.0 ? in[i].cut : cut});
+      out.push_back(vertex(in[i].x + distance[i] / (distance[i] - distance[j]) * (in[j].x - in[i].x),
+                           dj > 0.0 ? in[i].cut : cut));
   }
+}
+
+BeamTree::Vertex BeamTree::vertex(const glm::dvec3& x, bool cut) const {
+  return {x, cut, directional_ ? 0.0 : glm::distance(x, light_)};
 }
 
 // Edges of a loop on one side of a plane whose both ends lie in it (distance 0 from sides)
@@ -444,6 +450,8 @@ void BeamTree::mark_cuts(Loop& loop, const std::vector<double>& distance) {
 double BeamTree::beam_tolerance(const glm::dvec3& x) const {
   return directional_ ? epsilon_ : epsilon_ * glm::distance(x, light_) / far_;
 }
+
+double BeamTree::beam_tolerance(const Vertex& v) const { return directional_ ? epsilon_ : epsilon_ * v.reach / far_; }
 
 // Program 2 with both sides of a thick plane.
 BeamTree::Side BeamTree::classify(const glm::dvec3& p) const {
@@ -480,7 +488,7 @@ void BeamTree::partition(const BeamPolygon& polygon, std::vector<BeamPolygon>& l
     for (const Vertex& v : loop) part.vertices.push_back(v.x);
   };
   std::vector<std::pair<int, Loop>> stack(1);
-  for (const glm::dvec3& v : polygon.vertices) stack[0].second.push_back({v});
+  for (const glm::dvec3& v : polygon.vertices) stack[0].second.push_back(vertex(v, false));
   std::vector<double> distance;
   while (!stack.empty()) {
     auto [index, loop] = std::move(stack.back());

@@ -127,8 +127,10 @@ private:
 
   Where sides(const Loop& loop, const Plane& plane, bool beam, std::vector<double>& distance) const;
   static void mark_cuts(Loop& loop, const std::vector<double>& distance);
-  static void clip(const Loop& in, const std::vector<double>& distance, int side, bool cut, Loop& out);
+  void clip(const Loop& in, const std::vector<double>& distance, int side, bool cut, Loop& out) const;
+  Vertex vertex(const glm::dvec3& x, bool cut) const;
   double beam_tolerance(const glm::dvec3& x) const;
+  double beam_tolerance(const Vertex& v) const;  // the same, from the corner's reach
 
   bool directional_;
   glm::dvec3 light_;  // the position of a point light, the unit direction of a directional one
