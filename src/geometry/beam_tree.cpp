@@ -226,17 +226,27 @@ std::vector<BeamTree::Piece> BeamTree::sort_set(std::vector<Piece> pieces) const
   return order;
 }
 
-void BeamTree::divide(const std::vector<Piece>& set, std::vector<Piece>& near, std::vector<Piece>& on,
+// Moves the set's pieces (and the parts of those the plane cuts) to its sides.
+void BeamTree::divide(std::vector<Piece>& set, std::vector<Piece>& near, std::vector<Piece>& on,
                       std::vector<Piece>& far) const {
   if (set.size() > kSortLeaf) {
-    separate(set, median_plane(set), near, on, far);
-    if (near.size() < set.size() && far.size() < set.size()) return;
-    near.clear();
-    on.clear();
-    far.clear();
+    const Plane median = median_plane(set);
+    if (divides(set, median)) return separate(set, median, near, on, far);
   }
   // A piece lies in its own plane, so each such step places at least one piece.
   separate(set, fewest_cuts(set), near, on, far);
+}
+
+// Whether each side of the plane gets fewer pieces than the set (a piece it cuts goes to both).
+bool BeamTree::divides(const std::vector<Piece>& set, const Plane& plane) const {
+  size_t front = 0, back = 0;
+  std::vector<double> distance;
+  for (const Piece& piece : set) {
+    const Where where = sides(piece.loop, plane, false, distance);
+    front += where == Where::front || where == Where::both;
+    back += where == Where::back || where == Where::both;
+  }
+  return front < set.size() && back < set.size();
 }
 
 // Of a few pieces' planes spread over the set, the one that cuts the fewest pieces: cuts
@@ -277,7 +287,7 @@ BeamTree::Plane BeamTree::median_plane(const std::vector<Piece>& set) const {
   return {n, -*middle};
 }
 
-void BeamTree::separate(const std::vector<Piece>& set, const Plane& plane, std::vector<Piece>& near,
+void BeamTree::separate(std::vector<Piece>& set, const Plane& plane, std::vector<Piece>& near,
                         std::vector<Piece>& on, std::vector<Piece>& far) const {
   // The side holding L (directional: the side the light comes from); a plane through L or
   // along D has no such side, and then neither side hides the other.
@@ -285,10 +295,10 @@ void BeamTree::separate(const std::vector<Piece>& set, const Plane& plane, std::
   std::vector<Piece>& front = front_near ? near : far;
   std::vector<Piece>& back = front_near ? far : near;
   std::vector<double> distance;
-  for (const Piece& piece : set) switch (sides(piece.loop, plane, false, distance)) {
-      case Where::front: front.push_back(piece); break;
-      case Where::back: back.push_back(piece); break;
-      case Where::on: on.push_back(piece); break;
+  for (Piece& piece : set) switch (sides(piece.loop, plane, false, distance)) {
+      case Where::front: front.push_back(std::move(piece)); break;
+      case Where::back: back.push_back(std::move(piece)); break;
+      case Where::on: on.push_back(std::move(piece)); break;
       case Where::both:
         clip(piece.loop, distance, 1, false, front.emplace_back(Piece{{}, piece.surface}).loop);
         clip(piece.loop, distance, -1, false, back.emplace_back(Piece{{}, piece.surface}).loop);

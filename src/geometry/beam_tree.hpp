@@ -112,11 +112,12 @@ private:
   bool edge_on(std::span<const glm::dvec3> corners, const Plane& plane, double rounding) const;
   std::vector<Piece> sort_front_to_back(std::vector<Piece> pieces) const;
   std::vector<Piece> sort_set(std::vector<Piece> pieces) const;
-  void divide(const std::vector<Piece>& set, std::vector<Piece>& near, std::vector<Piece>& on,
+  void divide(std::vector<Piece>& set, std::vector<Piece>& near, std::vector<Piece>& on,
               std::vector<Piece>& far) const;
+  bool divides(const std::vector<Piece>& set, const Plane& plane) const;
   Plane median_plane(const std::vector<Piece>& set) const;
   Plane fewest_cuts(const std::vector<Piece>& set) const;
-  void separate(const std::vector<Piece>& set, const Plane& plane, std::vector<Piece>& near,
+  void separate(std::vector<Piece>& set, const Plane& plane, std::vector<Piece>& near,
                 std::vector<Piece>& on, std::vector<Piece>& far) const;
   void insert(Piece piece, std::vector<double>& distance);
   void attach(int leaf, const Piece& piece);
