@@ -189,7 +189,7 @@ public:
       // A frame that threw may leave a link running: the process's exit waits
       // for it rather than tear the driver down under it (Mesa's own exit
       // handlers, registered with the context before this, run after).
-      static const bool waits_at_exit = [] { return std::atexit([] { stop(); }) == 0; }();
+      static const int waits_at_exit = std::atexit(stop);
       (void)waits_at_exit;
     }
     return running();

@@ -58,8 +58,11 @@ std::string LitIntervalPass::defines() const {
   return d;
 }
 
+// The resolve's program's: the frame's and the pass's.
+std::string LitIntervalPass::resolve_defines(const SceneFrame& frame) const { return frame.defines() + defines(); }
+
 void LitIntervalPass::link_ahead(const SceneFrame& frame) const {
-  gpu::link_compute_ahead(resolve_program, frame.defines() + defines());
+  gpu::link_compute_ahead(resolve_program, resolve_defines(frame));
 }
 
 void LitIntervalPass::allocate_pool(size_t nodes) {
@@ -119,7 +122,7 @@ void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles
 
 void LitIntervalPass::resolve(const SceneFrame& frame, const EyeCounts& eye, const gpu::Texture& target) {
   const gpu::Program& program =
-      gpu::cached_compute_program(resolve_program, frame.defines() + defines());
+      gpu::cached_compute_program(resolve_program, resolve_defines(frame));
   glUseProgram(program.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());

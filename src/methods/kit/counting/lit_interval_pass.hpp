@@ -61,6 +61,7 @@ private:
   void resolve_in_passes(const SceneFrame& frame, const gpu::Program& program, const gpu::Texture& target);
   void allocate_pool(size_t nodes);
   std::string defines() const;
+  std::string resolve_defines(const SceneFrame& frame) const;
 
   double capacity_per_pixel_;
   int samples_;

@@ -192,14 +192,15 @@ std::string LightVolumeMesh::defines(Kind kind, const char* program, bool split)
 }
 
 void LightVolumeMesh::link_ahead(const SceneFrame& frame) const {
-  const int s = frame.shadow_resolution(), r = grid_for(s);
+  const int s = frame.shadow_resolution();
+  const bool split = sub_blocks_of(grid_for(s), s) > 1;
   std::vector<Kind> kinds;
   for (size_t i = 0; i < frame.shadow_kinds().size(); ++i) {
     const Kind kind = kind_of(frame.shadow_kinds()[i], frame.inputs().lights[i].type);
     if (kind == Kind::none || std::find(kinds.begin(), kinds.end(), kind) != kinds.end()) continue;
     kinds.push_back(kind);
     for (const char* program : build_programs(kind, depth_))
-      gpu::link_compute_ahead(program, defines(kind, program, sub_blocks_of(r, s) > 1));
+      gpu::link_compute_ahead(program, defines(kind, program, split));
   }
 }
 
