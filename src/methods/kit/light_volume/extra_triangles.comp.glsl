@@ -1,4 +1,4 @@
-// The light volume mesh's triangles beyond the grid (light_volume_mesh.glsl):
+// The light volume mesh's triangles beyond the grid (light_volume_mesh.glsl), one per item:
 // the side walls (spot, each cube face's walls across its edges), or walls,
 // skirt and cap (directional); shell: the strips between the two surfaces' borders.
 #include "methods/kit/light_volume/light_volume_mesh.glsl"
@@ -8,13 +8,14 @@
 // per border segment s the quad between the inner and the outer surface's
 // border, two triangles whose edges run against the outer grid's (wound as the
 // texel mesh's grid) and the inner grid's (wound the other way).
-void extra_triangles(uint item, uint local) {
-  int s = int(item);
-  float o = orientation(0);
+float extra_triangle(int k, out vec3 a, out vec3 b, out vec3 c) {
+  int s = k / 2;
   vec3 i0 = grid_vertex(0, border(s)), i1 = grid_vertex(0, border(s + 1));
   vec3 u0 = grid_vertex(1, border(s)), u1 = grid_vertex(1, border(s + 1));
-  write_oriented(2u * local, o, u1, u0, i0);
-  write_oriented(2u * local + 1u, o, u1, i0, i1);
+  a = u1;
+  b = k % 2 == 0 ? u0 : i0;
+  c = k % 2 == 0 ? i0 : i1;
+  return orientation(0);
 }
 #else
 #if VOLUME_KIND == KIND_CUBE
@@ -28,15 +29,14 @@ void across_seam(int face, int s, out int other, out ivec2 cell) {
   cell = min(min(face_coords(other, p0), face_coords(other, p1)), ivec2(grid - 1));
 }
 #else
-// On border vertex s, the depth where the two border segments that meet there
-// (s − 1 and s) leave their cells' wall to a common side: the nearer cell's
-// depth for a spot (its sides run to the apex), the farther for a
-// directional map (to the far ring). One corner for both, so the border's
-// sides share their edges exactly: overlapping edges of different lengths,
-// met by every ray near a spot's apex, let the ray test hold a crossing twice
-// or not at all.
-float border_end(int s) {
-  float before = cell_depth(0, border_cell(s + 4 * grid - 1)), after = cell_depth(0, border_cell(s));
+// On a border vertex, the depth where the two border segments that meet there
+// (their cells' depths `before` and `after`) leave their cells' wall to a
+// common side: the nearer cell's depth for a spot (its sides run to the apex),
+// the farther for a directional map (to the far ring). One corner for both, so
+// the border's sides share their edges exactly: overlapping edges of different
+// lengths, met by every ray near a spot's apex, let the ray test hold a
+// crossing twice or not at all.
+float border_end(float before, float after) {
 #if VOLUME_KIND == KIND_SPOT
   return min(before, after);
 #else
@@ -46,69 +46,86 @@ float border_end(int s) {
 
 // Part `part` (0, 1) of border segment s's side from the cell's depth d to
 // the common ends (border_end): (b1·d, b0·d, b0·e0) and (b1·d, b0·e0, b1·e1),
-// no area where an end is d. Returns the ends, b0·e0 and b1·e1, where the
-// side goes on to the apex or the far ring.
-void border_step(uint index, float o, int s, int part, out vec3 e0, out vec3 e1) {
-  float d = cell_depth(0, border_cell(s));
-  e0 = corner_at(0, border(s), border_end(s));
-  e1 = corner_at(0, border(s + 1), border_end(s + 1));
-  vec3 b0 = corner_at(0, border(s), d), b1 = corner_at(0, border(s + 1), d);
-  if (part == 0) write_oriented(index, o, b1, b0, e0);
-  else if (part == 1) write_oriented(index, o, b1, e0, e1);
+// no area where an end is d. Also the ends, e0 = b0·e0 and e1 = b1·e1, where
+// the side goes on to the apex or the far ring.
+void border_step(int s, int part, out vec3 a, out vec3 b, out vec3 c, out vec3 e0, out vec3 e1) {
+  float before = cell_depth(0, border_cell(s + 4 * grid - 1)), d = cell_depth(0, border_cell(s)),
+        after = cell_depth(0, border_cell(s + 1));
+  e0 = corner_at(0, border(s), border_end(before, d));
+  e1 = corner_at(0, border(s + 1), border_end(d, after));
+  vec3 b0 = corner_at(0, border(s), d);
+  a = corner_at(0, border(s + 1), d);
+  b = part == 0 ? b0 : e0;
+  c = part == 0 ? e0 : e1;
 }
 #endif
 
-// The grid runs along its border from border(s) to border(s + 1) when o > 0:
-// what closes it runs back.
-void extra_triangles(uint item, uint local) {
-  int R = grid, ring = 4 * R, k = int(item);
+// Triangle k beyond the grid, and its orientation. The grid runs along its
+// border from border(s) to border(s + 1) when o > 0: what closes it runs back.
+float extra_triangle(int k, out vec3 a, out vec3 b, out vec3 c) {
+  int R = grid, ring = 4 * R;
 #if VOLUME_KIND == KIND_CUBE
   // Per face and border segment: the wall to the cell across the cube's edge,
-  // from the face of the lower index (the other's: no area).
-  int face = k / ring, s = k % ring, other;
+  // from the face of the lower index (the other's: no area), two triangles.
+  int face = k / 2 / ring, s = k / 2 % ring, other;
   ivec2 cell;
   across_seam(face, s, other, cell);
   float d = cell_depth(face, border_cell(s));
-  wall(2u * local, orientation(face), face, border(s), border(s + 1), d, face < other ? cell_depth(other, cell) : d);
+  ivec2 u0, u1, u2;
+  float d0, d1, d2;
+  wall_triangle(border(s), border(s + 1), d, face < other ? cell_depth(other, cell) : d, k % 2, u0, d0, u1, d1, u2, d2);
+  a = corner_at(face, u0, d0);
+  b = corner_at(face, u1, d1);
+  c = corner_at(face, u2, d2);
+  return orientation(face);
 #elif VOLUME_KIND == KIND_SPOT
   // Per border segment: its step to the common ends, and from them to the apex.
-  float o = orientation(0);
   vec3 e0, e1;
-  border_step(local, o, k / 3, k % 3, e0, e1);
-  if (k % 3 == 2) write_oriented(local, o, e1, e0, extras[0].xyz);
-#elif VOLUME_KIND == KIND_DIRECTIONAL
-  float o = orientation(0);
+  border_step(k / 3, k % 3, a, b, c, e0, e1);
+  if (k % 3 == 2) {
+    a = e1;
+    b = e0;
+    c = extras[0].xyz;
+  }
+  return orientation(0);
+#else
   // [0, 16R): per border segment its step to the common ends E, and walls down
   // from them to the far ring F; [16R, 20R + 4): the skirt at the far depth,
   // per side a fan from its outer corner O; then the outer walls up to the cap
-  // corners Q (8), then the cap (2).
-  if (k < 4 * ring) {
+  // corners Q (8), then the cap (2). The corners that are extras are read
+  // once, by index: a read per case would be a gather per lane for each.
+  int ia, ib, ic;
+  if (k < 4 * ring) {  // (E1, E0, F0) and (E1, F0, F1): the last two
     int s = k / 4;
-    vec3 e0, e1;
-    border_step(local, o, s, k % 4, e0, e1);
-    vec3 f0 = extras[s].xyz, f1 = extras[(s + 1) % ring].xyz;
-    if (k % 4 == 2) write_oriented(local, o, e1, e0, f0);
-    else if (k % 4 == 3) write_oriented(local, o, e1, f0, f1);
-  } else if (k < 4 * ring + 4 * (R + 1)) {
-    int side = (k - 4 * ring) / (R + 1), j = (k - 4 * ring) % (R + 1);
-    vec3 outer = extras[ring + side].xyz;
-    if (j < R) {
-      int s = side * R + j;
-      write_oriented(local, o, outer, extras[(s + 1) % ring].xyz, extras[s].xyz);
-    } else {
-      write_oriented(local, o, extras[((side + 1) * R) % ring].xyz, outer, extras[ring + (side + 1) % 4].xyz);
-    }
-  } else if (k < 4 * ring + 4 * (R + 1) + 8) {
+    ia = s;
+    ib = s;
+    ic = k % 4 == 2 ? s : (s + 1) % ring;
+  } else if (k < 4 * ring + 4 * (R + 1)) {  // (O, F(s + 1), F(s)); the last: (F, O, O')
+    int side = (k - 4 * ring) / (R + 1), j = (k - 4 * ring) % (R + 1), s = side * R + j;
+    ia = j < R ? ring + side : ((side + 1) * R) % ring;
+    ib = j < R ? (s + 1) % ring : ring + side;
+    ic = j < R ? s : ring + (side + 1) % 4;
+  } else if (k < 4 * ring + 4 * (R + 1) + 8) {  // (O1, O0, Q0) and (O1, Q0, Q1)
     int side = (k - 4 * ring - 4 * (R + 1)) / 2;
-    vec3 o0 = extras[ring + side].xyz, o1 = extras[ring + (side + 1) % 4].xyz;
-    vec3 q0 = extras[ring + 4 + side].xyz, q1 = extras[ring + 4 + (side + 1) % 4].xyz;
-    if (k % 2 == 0) write_oriented(local, o, o1, o0, q0);
-    else write_oriented(local, o, o1, q0, q1);
-  } else {
-    vec3 q0 = extras[ring + 4].xyz, q1 = extras[ring + 5].xyz, q2 = extras[ring + 6].xyz, q3 = extras[ring + 7].xyz;
-    if (k % 2 == 0) write_oriented(local, o, q0, q3, q2);
-    else write_oriented(local, o, q0, q2, q1);
+    ia = ring + (side + 1) % 4;
+    ib = k % 2 == 0 ? ring + side : ring + 4 + side;
+    ic = k % 2 == 0 ? ring + 4 + side : ring + 4 + (side + 1) % 4;
+  } else {  // (Q0, Q3, Q2) and (Q0, Q2, Q1)
+    ia = ring + 4;
+    ib = ring + (k % 2 == 0 ? 7 : 6);
+    ic = ring + (k % 2 == 0 ? 6 : 5);
   }
+  a = extras[ia].xyz;
+  b = extras[ib].xyz;
+  c = extras[ic].xyz;
+  if (k < 4 * ring) {
+    vec3 sa, sb, sc, e0, e1;
+    border_step(k / 4, k % 4, sa, sb, sc, e0, e1);
+    a = k % 4 < 2 ? sa : e1;
+    b = k % 4 < 2 ? sb : k % 4 == 2 ? e0 : b;
+    c = k % 4 < 2 ? sc : c;
+  }
+  return orientation(0);
 #endif
 }
 #endif
@@ -116,6 +133,7 @@ void extra_triangles(uint item, uint local) {
 void main() {
   uint local = local_item();
   if (local >= uint(item_count)) return;
-  uint item = uint(first_item) + local;
-  extra_triangles(item, local);
+  vec3 a, b, c;
+  float o = extra_triangle(first_item + int(local), a, b, c);
+  write_oriented(local, o, a, b, c);
 }

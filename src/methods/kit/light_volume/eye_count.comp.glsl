@@ -7,9 +7,8 @@
 // cell, [0, 1]²) falls in: the same split of the cell as grid_triangles, the
 // plane of that triangle's corners.
 bool below_cell(int face, int layer, ivec2 c, vec2 f, vec3 x) {
-  vec3 v00, v10, v01, v11;
-  cell_corners(face, layer, c, v00, v10, v01, v11);
-  vec3 a = v00, b = f.y <= f.x ? v10 : v11, d = f.y <= f.x ? v11 : v01;  // (v00, v10, v11) or (v00, v11, v01)
+  vec3 a, b, d;
+  cell_triangle(face, layer, c, f.y <= f.x ? 0 : 1, a, b, d);
   return orientation(face) * dot(cross(b - a, d - a), x - a) < 0.0;
 }
 

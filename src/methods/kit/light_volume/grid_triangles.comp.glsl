@@ -1,42 +1,47 @@
-// The light volume mesh's grid triangles (light_volume_mesh.glsl): texel, six
-// per cell, its flat top and its walls to the next column's and row's cells;
-// shell, two per cell and surface.
+// The light volume mesh's grid triangles (light_volume_mesh.glsl), one per
+// item: texel, six per cell, its flat top and its walls to the next column's
+// and row's cells; shell, two per cell and surface.
 #include "methods/kit/light_volume/light_volume_mesh.glsl"
 
-// Cell c's two triangles on vertex layer `layer`, from record `index`.
-void cell_triangles(uint index, float o, int face, int layer, ivec2 c) {
-  vec3 v00, v10, v01, v11;
-  cell_corners(face, layer, c, v00, v10, v01, v11);
-  write_oriented(index, o, v00, v10, v11);
-  write_oriented(index + 1u, o, v00, v11, v01);
-}
+#if DEPTH_MODE == DEPTH_SHELL
+const int PER_CELL = 4;
+#else
+const int PER_CELL = 6;
+#endif
 
-
-void grid_triangles(uint item, uint local) {
-  int R = grid;
-  int face = int(item / uint(R * R)), rest = int(item % uint(R * R));
+void grid_triangle(uint item, uint local) {
+  int R = grid, t = int(item % uint(PER_CELL)), cell = int(item / uint(PER_CELL));
+  int face = cell / (R * R), rest = cell % (R * R);
   ivec2 c = ivec2(rest % R, rest / R);
   float o = orientation(face);
+  vec3 a, b, d;
 #if DEPTH_MODE == DEPTH_SHELL
-  cell_triangles(4u * local, -o, face, face, c);  // the inner surface faces the light: out of the shell
-  cell_triangles(4u * local + 2u, o, face, face + FACES, c);
+  // t 0, 1: the inner surface, which faces the light (out of the shell); 2, 3 the outer.
+  int surface = t / 2;
+  cell_triangle(face, face + surface * FACES, c, t % 2, a, b, d);
+  o = surface == 0 ? -o : o;
 #else
-  // The shadow map's own steps: the texel's flat top, at its depth, over
-  // exactly the directions that read it, and the walls to the next column's
-  // and row's cells. The last column's and row's walls are the border's
-  // sides (extra_triangles): here they get the cell's own depth, no area.
-  cell_triangles(6u * local, o, face, face, c);
-  float d = cell_depth(face, c);
-  float right = c.x + 1 < R ? cell_depth(face, c + ivec2(1, 0)) : d;
-  float up = c.y + 1 < R ? cell_depth(face, c + ivec2(0, 1)) : d;
-  wall(6u * local + 2u, o, face, c + ivec2(1, 0), c + ivec2(1), d, right);
-  wall(6u * local + 4u, o, face, c + ivec2(1), c + ivec2(0, 1), d, up);
+  // The shadow map's own steps: t 0, 1 the texel's flat top, at its depth,
+  // over exactly the directions that read it; 2, 3 (4, 5) the wall to the
+  // next column's (row's) cell. The last column's and row's walls are the
+  // border's sides (extra_triangles): here they get the cell's own depth, no area.
+  float dc = cell_depth(face, c);
+  ivec2 next = c + (t < 4 ? ivec2(1, 0) : ivec2(0, 1));
+  float dn = all(lessThan(next, ivec2(R))) ? cell_depth(face, next) : dc;
+  ivec2 u0, u1, u2;
+  float d0 = dc, d1 = dc, d2 = dc;
+  if (t < 2) half_vertices(t, c, u0, u1, u2);
+  else wall_triangle(t < 4 ? c + ivec2(1, 0) : c + ivec2(1), t < 4 ? c + ivec2(1) : c + ivec2(0, 1), dc, dn, t % 2,
+                     u0, d0, u1, d1, u2, d2);
+  a = corner_at(face, u0, d0);
+  b = corner_at(face, u1, d1);
+  d = corner_at(face, u2, d2);
 #endif
+  write_oriented(local, o, a, b, d);
 }
 
 void main() {
   uint local = local_item();
   if (local >= uint(item_count)) return;
-  uint item = uint(first_item) + local;
-  grid_triangles(item, local);
+  grid_triangle(uint(first_item) + local, local);
 }

@@ -238,18 +238,18 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
     gpu::set_uniform(p, "word_offset", 0);
     return p;
   };
-  // A pass that writes `per_item` records per item from record `first`, in
-  // ranges no larger than an SSBO binding may be.
+  // A pass that writes a record per item from record `first`, in ranges no
+  // larger than an SSBO binding may be.
   GLint align = 16;
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
-  auto write_records = [&](const gpu::Program& p, GLsizei first, GLuint items, GLuint per_item) {
-    const GLuint chunk = static_cast<GLuint>(max_records_) / per_item;
+  auto write_records = [&](const gpu::Program& p, GLsizei first, GLuint items) {
+    const GLuint chunk = static_cast<GLuint>(max_records_);
     for (GLuint done = 0; done < items; done += chunk) {
       const GLuint n = std::min(chunk, items - done);
-      const GLintptr at = (static_cast<GLintptr>(first) + static_cast<GLintptr>(done) * per_item) * record_bytes;
+      const GLintptr at = (static_cast<GLintptr>(first) + static_cast<GLintptr>(done)) * record_bytes;
       const GLintptr base = at - at % align;
       glBindBufferRange(GL_SHADER_STORAGE_BUFFER, records_binding, triangles_.id(), base,
-                        at - base + static_cast<GLsizeiptr>(n) * per_item * record_bytes);
+                        at - base + static_cast<GLsizeiptr>(n) * record_bytes);
       gpu::set_uniform(p, "word_offset", static_cast<int>((at - base) / word_bytes));
       dispatch_items(p, done, n);
     }
@@ -268,15 +268,15 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
   if (runs(seam_vertices)) dispatch_items(use(seam_vertices), 0, static_cast<GLuint>(6 * 4 * r));
   const GLsizei first = ranges_[static_cast<size_t>(light)].first;
   const GLuint per_cell = shell ? 4 : 6;  // shell: two per cell and surface; texel: the top and two walls
-  write_records(use(grid_triangles), first, cells, per_cell);
+  write_records(use(grid_triangles), first, per_cell * cells);
   const GLsizei extras_first = first + static_cast<GLsizei>(per_cell * cells);
   if (runs(extra_vertices)) dispatch_items(use(extra_vertices), 0, spot ? 1u : static_cast<GLuint>(4 * r + 8));
   if (runs(extra_triangles)) {
     // shell: the strips between the borders; cube: the walls across its
     // edges; spot: the sides to the apex; directional: walls, skirt and cap.
     const bool cube = kind == Kind::cube;
-    const int items = shell ? 4 * r : cube ? 6 * 4 * r : spot ? 12 * r : 20 * r + 14;
-    write_records(use(extra_triangles), extras_first, static_cast<GLuint>(items), shell || cube ? 2 : 1);
+    const int items = shell ? 8 * r : cube ? 6 * 8 * r : spot ? 12 * r : 20 * r + 14;
+    write_records(use(extra_triangles), extras_first, static_cast<GLuint>(items));
   }
   dispatch_items(use(eye_count), 0, 1);
 }

@@ -244,19 +244,27 @@ vec3 corner_at(int face, ivec2 v, float depth) {
 }
 #endif
 
-// Cell c's corners on vertex layer `layer` (texel: at the cell's depth, face `face`).
-void cell_corners(int face, int layer, ivec2 c, out vec3 v00, out vec3 v10, out vec3 v01, out vec3 v11) {
+// Half h (0, 1) of cell c, counter-clockwise in (i, j): grid vertices
+// (v00, v10, v11) or (v00, v11, v01).
+void half_vertices(int h, ivec2 c, out ivec2 u0, out ivec2 u1, out ivec2 u2) {
+  u0 = c;
+  u1 = c + (h == 0 ? ivec2(1, 0) : ivec2(1));
+  u2 = c + (h == 0 ? ivec2(1) : ivec2(0, 1));
+}
+
+// Half h of cell c on vertex layer `layer` (texel: at the cell's depth, face `face`).
+void cell_triangle(int face, int layer, ivec2 c, int h, out vec3 a, out vec3 b, out vec3 d) {
+  ivec2 u0, u1, u2;
+  half_vertices(h, c, u0, u1, u2);
 #if DEPTH_MODE == DEPTH_TEXEL
-  float d = cell_depth(face, c);
-  v00 = corner_at(face, c, d);
-  v10 = corner_at(face, c + ivec2(1, 0), d);
-  v01 = corner_at(face, c + ivec2(0, 1), d);
-  v11 = corner_at(face, c + ivec2(1), d);
+  float depth = cell_depth(face, c);
+  a = corner_at(face, u0, depth);
+  b = corner_at(face, u1, depth);
+  d = corner_at(face, u2, depth);
 #else
-  v00 = grid_vertex(layer, c);
-  v10 = grid_vertex(layer, c + ivec2(1, 0));
-  v01 = grid_vertex(layer, c + ivec2(0, 1));
-  v11 = grid_vertex(layer, c + ivec2(1));
+  a = grid_vertex(layer, u0);
+  b = grid_vertex(layer, u1);
+  d = grid_vertex(layer, u2);
 #endif
 }
 
@@ -305,24 +313,30 @@ void write_triangle(uint index, vec3 a, vec3 b, vec3 c) {
   records[w + 4u] = uvec4(uint(light_index), 1u, 0u, 0u);
 }
 
-// Oriented: (a, b, c) for o > 0, (a, c, b) otherwise. One write_triangle with
-// its corners chosen, not one per branch: GLSL inlines each call, and each copy
-// is compiled (docs/decisions.md "The first frame (issue 28)").
+// Oriented: (a, b, c) for o > 0, (a, c, b) otherwise. Every pass that writes
+// triangles writes one per invocation, by one call with its corners chosen,
+// not one per case: GLSL inlines each call, each copy is compiled, and its
+// five stores are a loop over the lanes each on llvmpipe (docs/decisions.md
+// "The first frame (issue 28)").
 void write_oriented(uint index, float o, vec3 a, vec3 b, vec3 c) {
   write_triangle(index, a, o > 0.0 ? b : c, o > 0.0 ? c : b);
 }
 
 #if DEPTH_MODE == DEPTH_TEXEL
-// The wall between cell c (depth dc) and its neighbour n (dn) across their
-// edge a → b (c's border counter-clockwise in (i, j)): the quad b_c a_c a_n
-// b_n, c's pyramid side (b_c, a_c, light) plus n's (a_n, b_n, light) as the
-// border's sides close the grid (extra_triangles); on a cube's edge,
-// c and n lie on two faces, the corners' rays the same. Where the depths agree its
-// corners coincide: no area, no crossing.
-void wall(uint index, float o, int face, ivec2 a, ivec2 b, float dc, float dn) {
-  vec3 ac = corner_at(face, a, dc), bc = corner_at(face, b, dc);
-  vec3 an = corner_at(face, a, dn), bn = corner_at(face, b, dn);
-  write_oriented(index, o, bc, ac, an);
-  write_oriented(index + 1u, o, bc, an, bn);
+// Part `part` (0, 1) of the wall between cell c (depth dc) and its neighbour n
+// (dn) across their edge a → b (c's border counter-clockwise in (i, j)): the
+// quad b_c a_c a_n b_n, c's pyramid side (b_c, a_c, light) plus n's (a_n, b_n,
+// light) as the border's sides close the grid (extra_triangles), is
+// (b_c, a_c, a_n) and (b_c, a_n, b_n): its corners' grid vertices u and
+// depths d. On a cube's edge, c and n lie on two faces, the corners' rays the
+// same. Where the depths agree its corners coincide: no area, no crossing.
+void wall_triangle(ivec2 a, ivec2 b, float dc, float dn, int part, out ivec2 u0, out float d0, out ivec2 u1,
+                   out float d1, out ivec2 u2, out float d2) {
+  u0 = b;
+  d0 = dc;
+  u1 = a;
+  d1 = part == 0 ? dc : dn;
+  u2 = part == 0 ? a : b;
+  d2 = dn;
 }
 #endif
