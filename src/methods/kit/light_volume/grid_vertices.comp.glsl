@@ -63,19 +63,18 @@ void grid_vertices(uint item) {
   if (owner(p) != face) return;  // another face computes this edge or corner vertex
 #endif
 #if DEPTH_MODE == DEPTH_TEXEL
-  // grid_position as origin + depth · step.
-  vec3 origin = LIGHT.position, step;
+  // grid_position as origin + depth · step (corner_at).
 #if VOLUME_KIND == KIND_CUBE
-  step = normalize(vec3(2 * p - grid) / float(grid));
+  vec3 step = normalize(vec3(2 * p - grid) / float(grid));
 #elif VOLUME_KIND == KIND_SPOT
-  step = normalize(map_ray(grid_ndc(v)));
+  vec3 step = normalize(map_ray(grid_ndc(v)));
 #else
-  vec3 along = map_ray(grid_ndc(v));
-  step = along / dot(along, LIGHT.direction);
-  origin = map_point(grid_ndc(v), 0.0);
+  vec3 along = map_ray(grid_ndc(v)), step = along / dot(along, LIGHT.direction), origin = map_point(grid_ndc(v), 0.0);
 #endif
   imageStore(vertices, ivec3(v, face), vec4(step, 0.0));
+#if VOLUME_KIND == KIND_DIRECTIONAL
   imageStore(vertices, ivec3(v, face + FACES), vec4(origin, 1.0));
+#endif
 #else
   float low = positive_infinity(), high = -positive_infinity();
 #if VOLUME_KIND == KIND_CUBE

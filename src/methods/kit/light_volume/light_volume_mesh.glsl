@@ -40,7 +40,8 @@ layout(binding = BINDING_SHADOW_CUBES) uniform samplerCubeArray shadow_cubes;
 
 // Grid vertex (i, j) of cube face `face` (layer 0 for 2D maps): xyz; a
 // shell's outer surface in layers FACES to 2·FACES − 1. Texel: the corner's
-// step per unit of depth in layer `face`, its ray's origin in face + FACES.
+// step per unit of depth in layer `face`, its ray's origin in face + FACES
+// (directional; a point light's rays start at the light).
 layout(rgba32f, binding = 0) uniform image2DArray vertices;
 // A cell's [min, max] stored depth as order-preserving bits (order_bits).
 layout(r32ui, binding = 1) uniform uimage2DArray cell_low;
@@ -238,8 +239,14 @@ float cell_depth(int face, ivec2 c) {
 // Grid vertex v's ray at `depth`. `precise`: the cells and walls that share
 // the point compute it apart, and a fused multiply–add in one of them would
 // round it differently (the watertight test needs shared corners' bits equal).
+// A light at a point is every ray's origin: only a directional map's are stored.
 vec3 corner_at(int face, ivec2 v, float depth) {
-  precise vec3 point = imageLoad(vertices, ivec3(v, face + FACES)).xyz + depth * imageLoad(vertices, ivec3(v, face)).xyz;
+#if VOLUME_KIND == KIND_DIRECTIONAL
+  vec3 origin = imageLoad(vertices, ivec3(v, face + FACES)).xyz;
+#else
+  vec3 origin = LIGHT.position;
+#endif
+  precise vec3 point = origin + depth * imageLoad(vertices, ivec3(v, face)).xyz;
   return point;
 }
 #endif
