@@ -1,6 +1,7 @@
 // The light volume mesh's grid vertices (light_volume_mesh.glsl): the (R+1)²
 // vertices per map or cube face — texel: each corner's ray (origin and step
-// per unit depth); shell: the displaced vertices of both surfaces.
+// per unit depth) and the depth of the cell it is the first corner of; shell:
+// the displaced vertices of both surfaces.
 #include "methods/kit/light_volume/light_volume_mesh.glsl"
 
 #if DEPTH_MODE == DEPTH_SHELL
@@ -71,7 +72,7 @@ void grid_vertices(uint item) {
 #else
   vec3 along = map_ray(grid_ndc(v)), step = along / dot(along, LIGHT.direction), origin = map_point(grid_ndc(v), 0.0);
 #endif
-  imageStore(vertices, ivec3(v, face), vec4(step, 0.0));
+  imageStore(vertices, ivec3(v, face), vec4(step, all(lessThan(v, ivec2(grid))) ? map_cell_depth(face, v) : 0.0));
 #if VOLUME_KIND == KIND_DIRECTIONAL
   imageStore(vertices, ivec3(v, face + FACES), vec4(origin, 1.0));
 #endif

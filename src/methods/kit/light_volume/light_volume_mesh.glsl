@@ -4,7 +4,8 @@
 // including this file, in the order LightVolumeMesh::build_light runs them:
 //   cell_depths.comp.glsl      each grid cell's [min, max] stored depth (shell only)
 //   grid_vertices.comp.glsl    the (R+1)² grid vertices per map or cube face: texel, each corner's ray
-//                              (origin and step per unit depth); shell, the displaced vertices
+//                              (origin and step per unit depth) and its cell's depth; shell, the
+//                              displaced vertices
 //   seam_vertices.comp.glsl    shell cubes: each face's border vertices copied from the face that owns them
 //   extra_vertices.comp.glsl   the apex (spot), or the far ring, skirt and cap corners (directional; texel only)
 //   grid_triangles.comp.glsl   texel: six triangles per cell, its flat top and its walls to the next
@@ -40,8 +41,9 @@ layout(binding = BINDING_SHADOW_CUBES) uniform samplerCubeArray shadow_cubes;
 
 // Grid vertex (i, j) of cube face `face` (layer 0 for 2D maps): xyz; a
 // shell's outer surface in layers FACES to 2·FACES − 1. Texel: the corner's
-// step per unit of depth in layer `face`, its ray's origin in face + FACES
-// (directional; a point light's rays start at the light).
+// step per unit of depth in layer `face` (w: the depth of the cell whose
+// corner v00 it is), its ray's origin in face + FACES (directional; a point
+// light's rays start at the light).
 layout(rgba32f, binding = 0) uniform image2DArray vertices;
 // A cell's [min, max] stored depth as order-preserving bits (order_bits).
 layout(r32ui, binding = 1) uniform uimage2DArray cell_low;
@@ -232,9 +234,13 @@ vec3 grid_vertex(int layer, ivec2 v) { return imageLoad(vertices, ivec3(v, layer
 // The depth of cell c of face `face`: as far as the shadow test calls points
 // lit (scene.glsl's shadow_visibility: up to the stored depth, no bias)
 // through the texel under the cell's centre (texel c when R = S).
-float cell_depth(int face, ivec2 c) {
+float map_cell_depth(int face, ivec2 c) {
   return clamp_depth(stored_depth(face, min((2 * c + 1) * map_size / (2 * grid), ivec2(map_size - 1))));
 }
+
+// The same, as grid_vertices stored it beside the step of the cell's corner
+// v00: read once per cell from the map, where a cube's is a sampled direction.
+float cell_depth(int face, ivec2 c) { return imageLoad(vertices, ivec3(c, face)).w; }
 
 // Grid vertex v's ray at `depth`. `precise`: the cells and walls that share
 // the point compute it apart, and a fused multiply–add in one of them would
