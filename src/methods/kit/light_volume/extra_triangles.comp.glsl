@@ -8,14 +8,13 @@
 // per border segment s the quad between the inner and the outer surface's
 // border, two triangles whose edges run against the outer grid's (wound as the
 // texel mesh's grid) and the inner grid's (wound the other way).
-float extra_triangle(int k, out vec3 a, out vec3 b, out vec3 c) {
+void extra_triangle(int k, out vec3 a, out vec3 b, out vec3 c) {
   int s = k / 2;
   vec3 i0 = grid_vertex(0, border(s)), i1 = grid_vertex(0, border(s + 1));
   vec3 u0 = grid_vertex(1, border(s)), u1 = grid_vertex(1, border(s + 1));
   a = u1;
   b = k % 2 == 0 ? u0 : i0;
   c = k % 2 == 0 ? i0 : i1;
-  return orientation(0);
 }
 #else
 #if VOLUME_KIND == KIND_CUBE
@@ -60,9 +59,9 @@ void border_step(int s, int part, out vec3 a, out vec3 b, out vec3 c, out vec3 e
 }
 #endif
 
-// Triangle k beyond the grid, and its orientation. The grid runs along its
-// border from border(s) to border(s + 1) when o > 0: what closes it runs back.
-float extra_triangle(int k, out vec3 a, out vec3 b, out vec3 c) {
+// Triangle k beyond the grid. The grid runs along its border from border(s)
+// to border(s + 1) when its orientation is +1: what closes it runs back.
+void extra_triangle(int k, out vec3 a, out vec3 b, out vec3 c) {
   int R = grid, ring = 4 * R;
 #if VOLUME_KIND == KIND_CUBE
   // Per face and border segment: the wall to the cell across the cube's edge,
@@ -77,7 +76,6 @@ float extra_triangle(int k, out vec3 a, out vec3 b, out vec3 c) {
   a = corner_at(face, u0, d0);
   b = corner_at(face, u1, d1);
   c = corner_at(face, u2, d2);
-  return orientation(face);
 #elif VOLUME_KIND == KIND_SPOT
   // Per border segment: its step to the common ends, and from them to the apex.
   vec3 e0, e1;
@@ -87,7 +85,6 @@ float extra_triangle(int k, out vec3 a, out vec3 b, out vec3 c) {
     b = e0;
     c = extras[0].xyz;
   }
-  return orientation(0);
 #else
   // [0, 16R): per border segment its step to the common ends E, and walls down
   // from them to the far ring F; [16R, 20R + 4): the skirt at the far depth,
@@ -125,7 +122,6 @@ float extra_triangle(int k, out vec3 a, out vec3 b, out vec3 c) {
     b = k % 4 < 2 ? sb : k % 4 == 2 ? e0 : b;
     c = k % 4 < 2 ? sc : c;
   }
-  return orientation(0);
 #endif
 }
 #endif
@@ -134,6 +130,6 @@ void main() {
   uint local = local_item();
   if (local >= uint(item_count)) return;
   vec3 a, b, c;
-  float o = extra_triangle(first_item + int(local), a, b, c);
-  write_oriented(local, o, a, b, c);
+  extra_triangle(first_item + int(local), a, b, c);
+  write_oriented(local, orientation(), a, b, c);
 }

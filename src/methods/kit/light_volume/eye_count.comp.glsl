@@ -1,5 +1,6 @@
 // The light volume mesh's eye count (light_volume_mesh.glsl): whether the
-// frame's eye is inside the light's volume, 0, else 1 (shell: inside the shell, 0).
+// frame's eye is inside the light's volume, 0, else 1 (shell: inside the shell,
+// 0); and the light's orientation, once, for the triangles that follow.
 #include "methods/kit/light_volume/light_volume_mesh.glsl"
 
 // Whether x is on the lit side of the triangle of cell c (of face `face`, on
@@ -9,7 +10,7 @@
 bool below_cell(int face, int layer, ivec2 c, vec2 f, vec3 x) {
   vec3 a, b, d;
   cell_triangle(face, layer, c, f.y <= f.x ? 0 : 1, a, b, d);
-  return orientation(face) * dot(cross(b - a, d - a), x - a) < 0.0;
+  return map_orientation() * dot(cross(b - a, d - a), x - a) < 0.0;
 }
 
 // The cell holding NDC ndc ∈ [−1, 1]², and where in it.
@@ -70,4 +71,5 @@ void main() {
   uint local = local_item();
   if (local >= uint(item_count)) return;
   eye();
+  extras[ORIENTATION_SLOT] = vec4(map_orientation());  // for the triangles (orientation())
 }

@@ -13,7 +13,7 @@ void grid_triangle(uint item, uint local) {
   int R = grid, t = int(item % uint(PER_CELL)), cell = int(item / uint(PER_CELL));
   int face = cell / (R * R), rest = cell % (R * R);
   ivec2 c = ivec2(rest % R, rest / R);
-  float o = orientation(face);
+  float o = orientation();
   vec3 a, b, d;
 #if DEPTH_MODE == DEPTH_SHELL
   // t 0, 1: the inner surface, which faces the light (out of the shell); 2, 3 the outer.

@@ -49,10 +49,10 @@ std::vector<const char*> build_programs(LightVolumeMesh::Kind kind, LightVolumeM
   if (shell) programs.push_back(cell_depths);
   programs.push_back(grid_vertices);
   if (shell && cube) programs.push_back(seam_vertices);  // the shell's cube edges
+  programs.push_back(eye_count);                          // and the light's orientation, for the triangles
   programs.push_back(grid_triangles);
   if (!shell && !cube) programs.push_back(extra_vertices);  // the apex, or the far ring, skirt and cap
   if (!(shell && cube)) programs.push_back(extra_triangles);  // a cube's shell has no border
-  programs.push_back(eye_count);
   return programs;
 }
 
@@ -117,7 +117,7 @@ void LightVolumeMesh::allocate(int grid, int layers, GLsizei triangles, int ligh
     vertices_ = gpu::make_texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, grid + 1, grid + 1, layers);
     cell_low_ = gpu::Texture();
     cell_high_ = gpu::Texture();
-    extras_ = gpu::make_buffer(static_cast<size_t>(4 * grid + 8) * sizeof(glm::vec4), nullptr);
+    extras_ = gpu::make_buffer(static_cast<size_t>(4 * grid + 9) * sizeof(glm::vec4), nullptr);  // ORIENTATION_SLOT last
   }
   if (depth_ != Depth::texel && !cell_low_) {
     cell_low_ = gpu::make_texture(GL_TEXTURE_2D_ARRAY, GL_R32UI, grid, grid, vertex_layers_);
@@ -266,6 +266,7 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
   dispatch_items(use(grid_vertices), 0, static_cast<GLuint>(faces * (r + 1) * (r + 1)));
   const bool shell = depth_ == Depth::shell, spot = kind == Kind::spot;
   if (runs(seam_vertices)) dispatch_items(use(seam_vertices), 0, static_cast<GLuint>(6 * 4 * r));
+  dispatch_items(use(eye_count), 0, 1);
   const GLsizei first = ranges_[static_cast<size_t>(light)].first;
   const GLuint per_cell = shell ? 4 : 6;  // shell: two per cell and surface; texel: the top and two walls
   write_records(use(grid_triangles), first, per_cell * cells);
@@ -278,7 +279,6 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
     const int items = shell ? 8 * r : cube ? 6 * 8 * r : spot ? 12 * r : 20 * r + 14;
     write_records(use(extra_triangles), extras_first, static_cast<GLuint>(items));
   }
-  dispatch_items(use(eye_count), 0, 1);
 }
 
 EyeCounts LightVolumeMesh::eye_counts() const {

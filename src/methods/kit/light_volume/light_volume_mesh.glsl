@@ -7,12 +7,12 @@
 //                              (origin and step per unit depth) and its cell's depth; shell, the
 //                              displaced vertices
 //   seam_vertices.comp.glsl    shell cubes: each face's border vertices copied from the face that owns them
-//   extra_vertices.comp.glsl   the apex (spot), or the far ring, skirt and cap corners (directional; texel only)
+//   eye_count.comp.glsl        whether the frame's eye is inside: 0, else 1; and the light's orientation
 //   grid_triangles.comp.glsl   texel: six triangles per cell, its flat top and its walls to the next
 //                              column's and row's cells; shell: two per cell and surface
+//   extra_vertices.comp.glsl   the apex (spot), or the far ring, skirt and cap corners (directional; texel only)
 //   extra_triangles.comp.glsl  the side walls (spot, each cube face), or walls, skirt and cap
 //                              (directional); shell: the strips between the two surfaces' borders
-//   eye_count.comp.glsl        whether the frame's eye is inside: 0, else 1
 // Specialized by defines: VOLUME_KIND (the light's mesh), DEPTH_MODE (a
 // vertex's depth), CELL_SPLIT (a cell's texels reduced by several
 // invocations). No runtime branch on the light's kind.
@@ -48,8 +48,10 @@ layout(rgba32f, binding = 0) uniform image2DArray vertices;
 // A cell's [min, max] stored depth as order-preserving bits (order_bits).
 layout(r32ui, binding = 1) uniform uimage2DArray cell_low;
 layout(r32ui, binding = 2) uniform uimage2DArray cell_high;
-// The vertices off the grid: apex; or far ring (4R), skirt corners (4), cap corners (4).
+// The vertices off the grid: apex; or far ring (4R), skirt corners (4), cap
+// corners (4). At ORIENTATION_SLOT, the light's map_orientation (eye_count).
 layout(std430, binding = BINDING_VOLUME_EXTRAS) buffer Extras { vec4 extras[]; };
+#define ORIENTATION_SLOT (4 * grid + 8)
 // CountedTriangle records (lit_intervals.glsl) as five uvec4 words each: the
 // three corners, the plane, ivec4(light, weight, 0, 0); this dispatch's first
 // record at word_offset of the bound range.
@@ -211,8 +213,8 @@ vec3 grid_position(ivec2 v, ivec3 p, float depth) {
 
 // +1 when the grid's triangles (v00, v10, v11), (v00, v11, v01) face away from
 // the light (out of the lit volume), −1 when they must be reversed: the
-// handedness of face `face`'s (or the map's) NDC → direction mapping.
-float orientation(int face) {
+// handedness of the map's (every cube face's) NDC → direction mapping.
+float map_orientation() {
 #if VOLUME_KIND == KIND_CUBE
   // det(cube_face_direction(f, (−1, −1)), (1, −1), (1, 1)) = −4 on every face: GL's
   // faces, seen from the cube's centre, all map (s, t) the same way round.
@@ -223,6 +225,18 @@ float orientation(int face) {
 #else
   vec3 a = map_point(vec2(-1.0), 0.0), b = map_point(vec2(1.0, -1.0), 0.0), c = map_point(vec2(1.0), 0.0);
   return dot(cross(b - a, c - a), LIGHT.direction) > 0.0 ? 1.0 : -1.0;
+#endif
+}
+
+// The same, a constant of the light: eye_count, run straight after the
+// grid's vertices, stores it in the extras' last slot, and the triangles read
+// it there. Computed per triangle, a map's three rays were a third of the
+// grid triangles' time per frame.
+float orientation() {
+#if VOLUME_KIND == KIND_CUBE
+  return -1.0;
+#else
+  return extras[ORIENTATION_SLOT].x;
 #endif
 }
 
