@@ -10,7 +10,9 @@
 // VOLUME_COUNT, LIGHT_MODEL_TYPE, GREY_MEDIA, MEDIUM_PHASE(c),
 // VOLUME_PHASE(v, c), FOR_EACH_LIGHT(F), FOR_EACH_LIGHT_SHARED(F) … — so that
 // with a constant light index every test of a light's kind folds away: a
-// generic shader pays for every branch it holds (docs/design.md §2).
+// generic shader pays for every branch it holds (docs/design.md §2). What
+// holds for the whole scene (SIMPLIFIED_MODEL, ISOTROPIC_COMPONENTS) is also
+// for #if: a branch that folds is still inlined, at every call, before it does.
 // A program that defines SCENE_IN_REGISTERS before including this file and
 // calls load_scene() first reads each light, volume and lobe from its buffer
 // once per invocation instead of at every use.

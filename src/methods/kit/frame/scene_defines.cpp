@@ -1,5 +1,6 @@
 #include "methods/kit/frame/scene_defines.hpp"
 
+#include <algorithm>
 #include <array>
 #include <type_traits>
 
@@ -119,8 +120,13 @@ std::string structure_defines(const std::vector<SceneLight>& lights, const std::
   d += "#define VOLUME_COUNT " + std::to_string(volumes.size()) + "\n";
   d += "#define LOBE_COUNT " + std::to_string(lobes.size()) + "\n";
   d += "#define LIGHT_MODEL_TYPE " + std::to_string(static_cast<int>(in.light_model.type)) + "\n";
+  d += std::string("#define SIMPLIFIED_MODEL ") + (in.light_model.type == LightModelType::simplified ? "1" : "0") + "\n";
   d += std::string("#define GREY_MEDIA ") + (grey_media ? "1" : "0") + "\n";
   d += "#define LIGHT_TYPES " + glsl_array("int", types) + "\n";
+  const auto has_type = [&](LightType t) { return std::count(types.begin(), types.end(), static_cast<int>(t)) > 0; };
+  d += std::string("#define HAS_POINT_LIGHT ") + (has_type(LightType::point) ? "1" : "0") +
+       "\n#define HAS_SPOT_LIGHT " + (has_type(LightType::spot) ? "1" : "0") + "\n#define HAS_DIRECTIONAL_LIGHT " +
+       (has_type(LightType::directional) ? "1" : "0") + "\n";
   d += "#define LIGHT_SHADOWS " + glsl_array("int", shadows) + "\n";
   d += "#define LIGHT_GOBOS " + glsl_array("bool", gobos) + "\n";
   d += "#define LIGHT_BEAMS " + glsl_array("bool", beams) + "\n";
@@ -143,6 +149,9 @@ std::string structure_defines(const std::vector<SceneLight>& lights, const std::
     if (isotropic(lobes, volumes[v].first_lobe, volumes[v].lobe_count))
       volume_isotropic += " || (v) == " + std::to_string(v);
   d += "#define VOLUME_ISOTROPIC(v) (" + volume_isotropic + ")\n";
+  // Whether any component can take Sun et al.'s isotropic closed form (closed_form.glsl local_piece).
+  const bool any_isotropic = isotropic(lobes, 0, medium_lobes) || volume_isotropic != "false";
+  d += std::string("#define ISOTROPIC_COMPONENTS ") + (any_isotropic ? "1" : "0") + "\n";
   return d;
 }
 

@@ -105,11 +105,19 @@ vec3 biri_angular(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float 
 }
 
 // One lit piece of a point or spot light (gamma.cpp local_piece); 0 if empty.
+// The closed forms the scene's model and media rule out are left out by the
+// preprocessor, not by constants: Mesa inlines every call before the
+// conditions fold, and the dead Sun and Nilsson forms inlined at every
+// local_piece were half of a program's link (docs/decisions.md, "The first
+// frame (issue 28)").
 vec3 local_piece(int i, MediumComponent m, vec3 eye, vec3 dir, float a, float b) {
   if (!(b > a)) return vec3(0.0);
   bool smooth_edge = light_types[i] == LIGHT_SPOT && light_edges[i];
-  if (simplified_model() && !smooth_edge) return nilsson_piece(i, m, eye, dir, a, b);  // the edge has no closed form
-  if (!simplified_model() && isotropic_component(m) && !smooth_edge) return sun_piece(i, m, eye, dir, a, b);
+#if SIMPLIFIED_MODEL
+  if (!smooth_edge) return nilsson_piece(i, m, eye, dir, a, b);  // the edge has no closed form
+#elif ISOTROPIC_COMPONENTS
+  if (isotropic_component(m) && !smooth_edge) return sun_piece(i, m, eye, dir, a, b);
+#endif
   return m.sigma_s * LIGHT(i).color * biri_angular(i, m, eye, dir, a, b);
 }
 
@@ -201,10 +209,20 @@ vec3 directional_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, f
 
 // Γ of light i scattered by component m along eye + t·dir (unit dir) over
 // [t0, t1], a piece that m's σt fills (optics::gamma with that Medium).
+// The kinds of light the scene has no light of are left out by the
+// preprocessor (local_piece).
 vec3 component_airlight(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1) {
+#if HAS_DIRECTIONAL_LIGHT
   if (light_types[i] == LIGHT_DIRECTIONAL) return directional_gamma(i, m, eye, dir, t0, t1);
+#endif
+#if HAS_POINT_LIGHT
   if (light_types[i] == LIGHT_POINT) return local_piece(i, m, eye, dir, t0, t1);
+#endif
+#if HAS_SPOT_LIGHT
   return spot_gamma(i, m, eye, dir, t0, t1);
+#else
+  return vec3(0.0);  // no light is left
+#endif
 }
 
 // Γ of light i in the medium that fills space: the entry point of the `analytic` method.
