@@ -88,6 +88,23 @@ std::string shared_light_loops(const std::vector<int>& representatives) {
   return groups + "\n" + loops + "\n";
 }
 
+// What some light of the scene has, and its light model, for #if (scene.glsl):
+// a branch no light takes is left out before Mesa inlines it at every call.
+std::string presence_defines(const std::vector<int>& types, const std::vector<bool>& edges,
+                             const std::vector<bool>& gobos, LightModelType model) {
+  const auto has = [&](LightType type, int edge) {  // edge: -1 any, 0 hard, 1 smooth
+    for (size_t k = 0; k < types.size(); ++k)
+      if (types[k] == static_cast<int>(type) && (edge < 0 || edges[k] == (edge == 1))) return true;
+    return false;
+  };
+  const auto flag = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
+  return flag("HAS_POINT_LIGHT", has(LightType::point, -1)) + flag("HAS_SPOT_LIGHT", has(LightType::spot, -1)) +
+         flag("HAS_DIRECTIONAL_LIGHT", has(LightType::directional, -1)) +
+         flag("HAS_SMOOTH_SPOT", has(LightType::spot, 1)) + flag("HAS_HARD_SPOT", has(LightType::spot, 0)) +
+         flag("HAS_GOBO", std::find(gobos.begin(), gobos.end(), true) != gobos.end()) +
+         flag("SIMPLIFIED_MODEL", model == LightModelType::simplified);
+}
+
 }  // namespace
 
 std::vector<int> structure_representatives(const std::vector<SceneLight>& lights) {
@@ -120,13 +137,9 @@ std::string structure_defines(const std::vector<SceneLight>& lights, const std::
   d += "#define VOLUME_COUNT " + std::to_string(volumes.size()) + "\n";
   d += "#define LOBE_COUNT " + std::to_string(lobes.size()) + "\n";
   d += "#define LIGHT_MODEL_TYPE " + std::to_string(static_cast<int>(in.light_model.type)) + "\n";
-  d += std::string("#define SIMPLIFIED_MODEL ") + (in.light_model.type == LightModelType::simplified ? "1" : "0") + "\n";
   d += std::string("#define GREY_MEDIA ") + (grey_media ? "1" : "0") + "\n";
   d += "#define LIGHT_TYPES " + glsl_array("int", types) + "\n";
-  const auto has_type = [&](LightType t) { return std::count(types.begin(), types.end(), static_cast<int>(t)) > 0; };
-  d += std::string("#define HAS_POINT_LIGHT ") + (has_type(LightType::point) ? "1" : "0") +
-       "\n#define HAS_SPOT_LIGHT " + (has_type(LightType::spot) ? "1" : "0") + "\n#define HAS_DIRECTIONAL_LIGHT " +
-       (has_type(LightType::directional) ? "1" : "0") + "\n";
+  d += presence_defines(types, edges, gobos, in.light_model.type);
   d += "#define LIGHT_SHADOWS " + glsl_array("int", shadows) + "\n";
   d += "#define LIGHT_GOBOS " + glsl_array("bool", gobos) + "\n";
   d += "#define LIGHT_BEAMS " + glsl_array("bool", beams) + "\n";

@@ -160,7 +160,10 @@ vec3 spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1
   vec3 apex = LIGHT(i).position, axis = LIGHT(i).direction;
   float cone = LIGHT(i).cone, inner = cone - LIGHT(i).edge;
   ConeIntervals lit = cone_intervals(apex, axis, spot_sin_cos(i), eye, dir, t0, t1);
+#if HAS_HARD_SPOT
   if (!light_edges[i]) return hard_spot_gamma(i, m, eye, dir, lit);  // a constant: folds away
+#endif
+#if HAS_SMOOTH_SPOT  // left out before it is inlined where every spot is hard (scene.glsl)
   bool cut = inner > 0.0;
   float ends[12];
   for (int k = 0; k < 2; ++k) {
@@ -185,6 +188,9 @@ vec3 spot_gamma(int i, MediumComponent m, vec3 eye, vec3 dir, float t0, float t1
     sum += local_piece(i, m, eye, dir, a, b);
   }
   return sum;
+#else
+  return vec3(0.0);  // unreached: every spot returned above
+#endif
 }
 
 // gamma.cpp directional: the exact exponential form, over the beam's box if any.

@@ -50,6 +50,9 @@ vec3 gamma_light_depth(int i, vec3 x) {
 // correlation with the cone's edge, the phase and extinction
 // (docs/decisions.md). 1 without a gobo or a volume: Γ is then exact.
 vec3 interval_correction(int i, vec3 eye, vec3 dir, float a, float b, int samples) {
+#if !HAS_GOBO && VOLUME_COUNT == 0
+  return vec3(1.0);  // left out before it is inlined (scene.glsl)
+#else
   if (!light_gobos[i] && VOLUME_COUNT == 0) return vec3(1.0);
   vec2 lit = lit_interval(i, eye, dir, a, b);
   if (!(lit.y > lit.x)) return vec3(1.0);  // Γ is 0 there
@@ -64,6 +67,7 @@ vec3 interval_correction(int i, vec3 eye, vec3 dir, float a, float b, int sample
     modelled += f * light_shape(i, x) * exp(light_leg_depth(i, x) - gamma_light_depth(i, x));
   }
   return mix(vec3(1.0), exact / max(modelled, vec3(1e-30)), greaterThan(modelled, vec3(0.0)));
+#endif
 }
 
 // Γ over [a, b] in the medium that fills space, corrected for a gobo.
