@@ -158,12 +158,13 @@ std::string structure_defines(const std::vector<SceneLight>& lights, const std::
                    phase_expression(lobes, volumes[v].first_lobe, volumes[v].lobe_count) + " : " + volume_phase + ")";
   d += "#define VOLUME_PHASE(v, c) " + volume_phase + "\n";
   std::string volume_isotropic = "false";  // VOLUME_ISOTROPIC(v): v is one of the isotropic volumes; folds too
+  bool any_isotropic = isotropic(lobes, 0, medium_lobes);  // a component may take Sun et al.'s form (#if)
   for (size_t v = 0; v < volumes.size(); ++v)
-    if (isotropic(lobes, volumes[v].first_lobe, volumes[v].lobe_count))
+    if (isotropic(lobes, volumes[v].first_lobe, volumes[v].lobe_count)) {
       volume_isotropic += " || (v) == " + std::to_string(v);
+      any_isotropic = true;
+    }
   d += "#define VOLUME_ISOTROPIC(v) (" + volume_isotropic + ")\n";
-  // Whether any component can take Sun et al.'s isotropic closed form (closed_form.glsl local_piece).
-  const bool any_isotropic = isotropic(lobes, 0, medium_lobes) || volume_isotropic != "false";
   d += std::string("#define ISOTROPIC_COMPONENTS ") + (any_isotropic ? "1" : "0") + "\n";
   return d;
 }

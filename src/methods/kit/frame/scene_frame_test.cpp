@@ -292,5 +292,33 @@ TEST(SceneFrame, SeveralLightsAndAmbient) {
   expect_surface_close(s, 0.02, 0.005, "shadow edges of three lights' maps");
 }
 
+// The scene-wide flags for #if (scene.glsl) name what some light or medium of
+// the scene has: stage's five spots, soft and hard, two with gobos, in an
+// anisotropic medium; three_lights' point, soft spot and sun; Biri's media,
+// isotropic; Nilsson's simplified model in an isotropic medium.
+TEST(SceneFrame, ScenewideFlagsNameWhatSomeLightHas) {
+  gpu::Context& context = gpu::Context::headless();
+  const auto flags_of = [](const char* name) {
+    const Scene scene = builtin_scene(name);
+    SceneFrame frame;
+    frame.prepare(scene);
+    PassTimer timer;
+    frame.render(frame_inputs(scene, 8, 8), {}, nullptr, {}, timer);
+    std::string flags;
+    for (const char* flag : {"HAS_POINT_LIGHT", "HAS_SPOT_LIGHT", "HAS_DIRECTIONAL_LIGHT", "HAS_SMOOTH_SPOT",
+                             "HAS_HARD_SPOT", "HAS_GOBO", "SIMPLIFIED_MODEL", "ISOTROPIC_COMPONENTS"}) {
+      const std::string key = std::string("#define ") + flag + " ";
+      const size_t at = frame.defines().find(key);
+      flags += at == std::string::npos ? '?' : frame.defines()[at + key.size()];
+    }
+    return flags;
+  };
+  EXPECT_EQ(flags_of("stage"), "01011100");
+  EXPECT_EQ(flags_of("three_lights"), "11110000");
+  EXPECT_EQ(flags_of("biri_media"), "01001001");
+  EXPECT_EQ(flags_of("nilsson_toplight"), "01001011");
+  context.check("scene-wide flags");
+}
+
 }  // namespace
 }  // namespace airlight::kit
