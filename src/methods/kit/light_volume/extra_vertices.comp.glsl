@@ -8,14 +8,10 @@ void extra_vertices(uint item) {
 #elif VOLUME_KIND == KIND_DIRECTIONAL
   int ring = 4 * grid, k = int(item);
   const vec2 corners[4] = vec2[](vec2(-1.0), vec2(1.0, -1.0), vec2(1.0), vec2(-1.0, 1.0));
-  vec2 ndc;
-  float depth = far_ring_depth;
-  if (k < ring) ndc = grid_ndc(border(k));          // under the grid's border
-  else if (k < ring + 4) ndc = corners[k - ring] * skirt_extent();  // the skirt's corners
-  else {                                            // the cap's corners
-    ndc = corners[k - ring - 4] * skirt_extent();
-    depth = cap_depth;
-  }
+  // Under the grid's border, then the skirt's corners, then the cap's: one
+  // skirt_extent and one corner read, not one per case (each is compiled).
+  vec2 ndc = k < ring ? grid_ndc(border(k)) : corners[max(k - ring, 0) % 4] * skirt_extent();
+  float depth = k < ring + 4 ? far_ring_depth : cap_depth;
   extras[k] = vec4(map_point(ndc, depth), 1.0);
 #endif
 }
