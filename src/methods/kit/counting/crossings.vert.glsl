@@ -18,10 +18,9 @@
 // still keeps the corner finite: at its 10⁵ margins, slivers down to 10⁻⁶
 // radians keep a margin above the snapping. A finite triangle reaching behind
 // the eye, or beyond REACH pixels where the rasterizer's fixed point ends, is
-// clipped to the view's frustum (widened by GUARD pixels) in clip space, and
-// the triangle around the rectangle around that part drawn instead, tested
-// exactly all the same: left to the rasterizer, as it was, its edges leaked
-// against the exactly tested triangles beside it.
+// grown by the same margin in homogeneous coordinates and left to GL's
+// clipping, tested exactly all the same: drawn ungrown, as it once was, its
+// edges leaked against the exactly tested triangles beside it.
 #include "methods/kit/frame/scene.glsl"
 #include "methods/kit/counting/lit_intervals.glsl"
 
@@ -36,8 +35,6 @@ flat out int exact;  // 1: the fragment tests its ray against the triangle
 const float COVER_MARGIN = 1.0 / 16.0;
 const float MITER_LIMIT = 1e5;
 const float REACH = 1e6;
-const float GUARD = 4.0;
-const int MAX_PART = 7;  // a triangle clipped by four planes
 
 float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
 
@@ -53,67 +50,38 @@ vec2 grown_corner(vec2 s[3], float side, int k) {
   return s[k] + COVER_MARGIN * min(2.0 / length(normals), MITER_LIMIT) * bisector;
 }
 
-// How far clip-space point p lies inside plane k of the frustum widened by GUARD pixels
-// (|x| ≤ reach.x·w, |y| ≤ reach.y·w), in clip units: negative outside.
-float inside(vec4 p, int k) {
-  vec2 reach = 1.0 + 2.0 * GUARD / frame.size;
-  float c = k < 2 ? p.x : p.y;
-  return (k < 2 ? reach.x : reach.y) * p.w - (k % 2 == 0 ? c : -c);
-}
-
-// The triangle's part in the widened frustum, in pixels from the image's centre: n corners,
-// fewer than 3 where it lies outside. Each corner and its side of a plane are carried to the
-// next edge rather than read again: an array read at a data index is a gather per lane on
-// llvmpipe, and reading each corner twice made this fallback most of the program's compile
-// (docs/decisions.md "The first frame (issue 28)").
-int visible_part(vec4 clip[3], out vec2 part[MAX_PART]) {
-  vec4 polygon[MAX_PART], clipped[MAX_PART];
-  for (int i = 0; i < 3; ++i) polygon[i] = clip[i];
-  int n = 3;
-  for (int k = 0; k < 4; ++k) {
-    int m = 0;
-    vec4 first = polygon[0], p = first;
-    float d_first = inside(first, k), dp = d_first;
-    for (int i = 0; i < n; ++i) {
-      vec4 q = i + 1 < n ? polygon[i + 1] : first;
-      float dq = i + 1 < n ? inside(q, k) : d_first;
-      if (dp >= 0.0) clipped[m++] = p;
-      if ((dp >= 0.0) != (dq >= 0.0)) clipped[m++] = mix(p, q, dp / (dp - dq));
-      p = q;
-      dp = dq;
-    }
-    polygon = clipped;
-    n = m;
+// Corner k of the triangle grown by the margin in the view's homogeneous 2D coordinates, where
+// no corner needs to be in front of the eye (Olano & Greer 1997's edge functions): each corner
+// (x, y, w) in pixels, the line through two corners their cross product, pushed out by the
+// margin, and each corner again where its two lines meet, signed so that it is the same point
+// at a margin of 0. Returned in clip space: GL's clipping then cuts the grown triangle to the
+// view. Clipping the triangle here and drawing the triangle around its part, as before, wrote
+// arrays at data indices, a scatter per lane on llvmpipe: most of the program's compile, and
+// run masked by every vertex (docs/decisions.md "The first frame (issue 28)"). In double: a
+// line through two corners far apart on the image (or far off it) is their nearly parallel
+// vectors' cross product, and in float its error passed the margin (three_lights lost pixels).
+vec4 grown_homogeneous_corner(vec4 clip[3], int k) {
+  vec2 half_size = 0.5 * frame.size;
+  dvec3 v[3];
+  for (int i = 0; i < 3; ++i) v[i] = normalize(dvec3(clip[i].xy * half_size, clip[i].w));
+  double orientation = sign(dot(v[0], cross(v[1], v[2])));  // 0: edge-on, no pixel's ray crosses it
+  // Line i runs through the corners other than i; pixel p = (x, y, 1) is inside where line_i · p
+  // has the orientation's sign, and |line_i · p| / |line_i.xy| pixels from it.
+  dvec3 line[3];
+  for (int i = 0; i < 3; ++i) {
+    dvec3 l = cross(v[(i + 1) % 3], v[(i + 2) % 3]);
+    line[i] = l + dvec3(0.0, 0.0, orientation * COVER_MARGIN * length(l.xy));
   }
-  for (int i = 0; i < n; ++i) part[i] = 0.5 * frame.size * polygon[i].xy / polygon[i].w;
-  return n;
-}
-
-// Corner k of the triangle around polygon part[0 … n), grown by the margin: twice the
-// rectangle around it along its longest edge (the longest kept, not read again).
-vec2 enclosing_corner(vec2 part[MAX_PART], int n, int k) {
-  vec2 start = part[0], end = part[1];
-  float longest = distance(end, start);
-  for (int i = 1; i < n; ++i) {
-    vec2 next = i + 1 < n ? part[i + 1] : part[0];
-    float length_i = distance(next, part[i]);
-    if (length_i > longest) {
-      start = part[i];
-      end = next;
-      longest = length_i;
-    }
-  }
-  vec2 along = normalize(end - start), across = vec2(-along.y, along.x);
-  vec2 lo = vec2(0.0), hi = vec2(0.0);
-  for (int i = 0; i < n; ++i) {
-    vec2 p = vec2(dot(part[i] - start, along), dot(part[i] - start, across));
-    lo = min(lo, p);
-    hi = max(hi, p);
-  }
-  lo -= COVER_MARGIN;
-  hi += COVER_MARGIN;
-  vec2 corner = lo + vec2(k == 1 ? 2.0 : 0.0, k == 2 ? 2.0 : 0.0) * (hi - lo);
-  return start + corner.x * along + corner.y * across;
+  // The three lines bound four triangles of the projective plane; grown, they bound the one
+  // around this triangle while their determinant keeps its sign (volume² at a margin of 0).
+  // Where the triangle reaches behind the eye its part in view is unbounded, and pushing its
+  // lines out shrinks the triangle of its projected corners, until the lines meet in a point
+  // and the grown triangle would become that one: then the whole view is drawn, the exact test
+  // deciding.
+  if (!(dot(line[0], cross(line[1], line[2])) > 0.0)) return vec4(k == 1 ? 3.0 : -1.0, k == 2 ? 3.0 : -1.0, 0.0, 1.0);
+  dvec3 corner = orientation * cross(line[(k + 1) % 3], line[(k + 2) % 3]);
+  corner /= length(corner);  // within float's range; the point is the same
+  return vec4(vec2(corner.xy) / half_size, 0.0, float(corner.z));
 }
 
 void main() {
@@ -147,8 +115,5 @@ void main() {
       return;
     }
   }
-  vec2 part[MAX_PART];
-  int n = visible_part(clip, part);
-  vec2 corner = n >= 3 ? enclosing_corner(part, n, k) : vec2(0.0);
-  gl_Position = vec4(corner / (0.5 * frame.size), 0.0, 1.0);
+  gl_Position = grown_homogeneous_corner(clip, k);
 }
