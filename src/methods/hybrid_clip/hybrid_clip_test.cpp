@@ -119,5 +119,17 @@ TEST(HybridClip, LightsOfOneStructureShareTheirPrograms) {
   EXPECT_EQ(programs(stage), programs(two));
 }
 
+// A cold first frame plans the planes on the CPU before the frame's passes
+// (PlanePass::plan) and links ahead on the worker what the plan draws, each
+// then used: on three_lights, for each of its three lights (three structures),
+// the fully lit and the uncertain pieces' programs and the cut slabs'.
+TEST(HybridClip, FirstFrameLinksAheadThePartsEachLightDraws) {
+  gpu::clear_program_cache();
+  const int ahead = gpu::linked_ahead_count();
+  render_case("hybrid_clip", builtin_scene("three_lights"), {});
+  EXPECT_EQ(gpu::linked_ahead_count(), ahead + 9);
+  EXPECT_EQ(gpu::programs_linking(), 0) << "a program linked ahead was not the one the frame used";
+}
+
 }  // namespace
 }  // namespace airlight::methods

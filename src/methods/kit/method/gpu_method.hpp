@@ -52,7 +52,8 @@ protected:
   // Once per frame, before any pass, once frame.defines() is this frame's:
   // starts linking the programs the method's last passes will use
   // (gpu::link_ahead), so that a new scene structure's first frame links them
-  // beside the frame's other passes.
+  // beside the frame's other passes — after the CPU work that decides which
+  // they are, where there is some (the planes' plan: PlanePass::plan).
   virtual void link_ahead(const SceneFrame& frame) { (void)frame; }
   // Once per frame, before render_airlight: what depends on the frame but not
   // on the pixel grid (a shadow volume, a light volume mesh), which a frame at

@@ -13,6 +13,7 @@ namespace {
 
 constexpr GLuint jitter_unit = binding::first_free_texture;
 constexpr int max_planes = 8192;  // per light: dz never below 1/8192 of the lit depth
+constexpr const char* fragment_stage = "methods/kit/planes/planes.frag.glsl";
 
 // Two triangles per cell of an n×n lattice over (n + 1)² vertices, row-major.
 std::vector<GLuint> lattice_indices(int n) {
@@ -116,10 +117,51 @@ PlanePass::Slabs PlanePass::slabs(const LightBounds& volume) const {
   return {n, static_cast<float>(depth / n)};
 }
 
-void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
+void PlanePass::plan(const SceneFrame& frame) {
   light_bounds_.update(frame.inputs());
   camera_ = geometry::camera_basis(frame.inputs().camera);
   far_ = frame.inputs().camera.far;
+  // cos of the angle between the view axis and the ray through an image corner
+  cos_edge_ = static_cast<float>(
+      1.0 / geometry::corner_distance(frame.inputs().camera, double(frame.width()) / frame.height(), 1.0));
+  slab_pieces_.reset();
+  plans_.clear();
+  for (int i = 0; i < static_cast<int>(light_bounds_.bounds().size()); ++i) {
+    plans_.push_back(plan_light(frame, i, light_bounds_.bounds()[i]));
+    for (const Part part : parts(plans_.back()))
+      gpu::link_ahead({{GL_VERTEX_SHADER, vertex_stage(part)}, {GL_FRAGMENT_SHADER, fragment_stage}},
+                      frame.defines() + defines(frame, i, part));
+  }
+}
+
+// Nilsson §5.3–5.4 with every sample where planes would take it. A plane's
+// regions hold at its slab's middle, which is where the sample of a slab wholly
+// in front of the surface lies (sampling=plane): those slabs are drawn as the
+// fully lit and uncertain polygons (FULL_SLABS). The one slab per pixel that
+// the surface cuts samples elsewhere; a full-screen pass takes it with the
+// shadow test (CUT_SLABS). So sampling=plane gives planes' image, with fewer
+// fragments. Lit sampling's pieces and Γ over a fully lit slab reach the whole
+// slab: its regions are then taken with that margin (slab_pieces.hpp).
+PlanePass::LightPlan PlanePass::plan_light(const SceneFrame& frame, int light, const LightBounds& volume) {
+  LightPlan plan{slabs(volume), settings_.clip ? volume.clip : std::vector<glm::vec4>{}, {}};
+  if (plan.slabs.count == 0 || settings_.cut == PlaneCut::none) return plan;
+  std::vector<glm::vec4> widened = plan.clip;
+  for (glm::vec4& h : widened) h.w += reach(plan.slabs);
+  plan.pieces = slab_pieces_.build(frame.inputs(), light, plan.slabs.count, plan.slabs.dz, reach(plan.slabs), widened);
+  return plan;
+}
+
+std::vector<PlanePass::Part> PlanePass::parts(const LightPlan& plan) const {
+  if (plan.slabs.count == 0) return {};
+  if (settings_.cut == PlaneCut::none) return {Part::lattice};
+  std::vector<Part> drawn;
+  if (!plan.pieces.fully_lit.empty()) drawn.push_back(Part::fully_lit);
+  if (!plan.pieces.uncertain.empty()) drawn.push_back(Part::uncertain);
+  drawn.push_back(Part::cut_slabs);
+  return drawn;
+}
+
+void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, zero);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
@@ -139,14 +181,13 @@ void PlanePass::run(const SceneFrame& frame, const gpu::Texture& target) {
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   for (GLenum c = 0; c < 8; ++c) glEnable(GL_CLIP_DISTANCE0 + c);
-  // cos of the angle between the view axis and the ray through an image corner
-  cos_edge_ = static_cast<float>(
-      1.0 / geometry::corner_distance(frame.inputs().camera, double(frame.width()) / frame.height(), 1.0));
   glBindTextureUnit(jitter_unit, noise_.id());
   planes_drawn_ = 0.0;
-  slab_pieces_.reset();
   invocations_.begin();
-  for (int i = 0; i < static_cast<int>(light_bounds_.bounds().size()); ++i) draw_light(frame, i, light_bounds_.bounds()[i]);
+  for (int i = 0; i < static_cast<int>(plans_.size()); ++i) {
+    for (const Part part : parts(plans_[i])) draw(frame, i, part, plans_[i]);
+    planes_drawn_ += plans_[i].slabs.count;
+  }
   invocations_.end();
   for (GLenum c = 0; c < 8; ++c) glDisable(GL_CLIP_DISTANCE0 + c);
   glDisable(GL_BLEND);
@@ -174,75 +215,47 @@ std::string PlanePass::defines(const SceneFrame& frame, int light, Part part) co
   return d;
 }
 
-void PlanePass::draw_light(const SceneFrame& frame, int light, const LightBounds& volume) {
-  const Slabs s = slabs(volume);
-  if (s.count == 0) return;
-  const std::vector<glm::vec4> clip = settings_.clip ? volume.clip : std::vector<glm::vec4>{};
-  if (settings_.cut == PlaneCut::none)
-    draw(frame, light, Part::lattice, s, clip);
-  else
-    draw_pieces(frame, light, s, clip);
-  planes_drawn_ += s.count;
-}
-
-// Nilsson §5.3–5.4 with every sample where planes would take it. A plane's
-// regions hold at its slab's middle, which is where the sample of a slab wholly
-// in front of the surface lies (sampling=plane): those slabs are drawn as the
-// fully lit and uncertain polygons (FULL_SLABS). The one slab per pixel that
-// the surface cuts samples elsewhere; a full-screen pass takes it with the
-// shadow test (CUT_SLABS). So sampling=plane gives planes' image, with fewer
-// fragments. Lit sampling's pieces and Γ over a fully lit slab reach the whole
-// slab: its regions are then taken with that margin (slab_pieces.hpp).
-void PlanePass::draw_pieces(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip) {
-  std::vector<glm::vec4> widened = clip;
-  for (glm::vec4& h : widened) h.w += reach(s);
-  slab_pieces_.build(frame.inputs(), light, s.count, s.dz, reach(s), widened);
-  glEnable(GL_CULL_FACE);  // the pieces' triangles face the eye (slab_pieces.cpp)
-  for (const Part part : {Part::fully_lit, Part::uncertain}) {
-    upload(part == Part::fully_lit ? slab_pieces_.fully_lit() : slab_pieces_.uncertain());
-    draw(frame, light, part, s, clip);
-  }
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_DEPTH_TEST);
-  draw(frame, light, Part::cut_slabs, s, {});
-  glEnable(GL_DEPTH_TEST);
-}
-
 void PlanePass::upload(const std::vector<PieceVertex>& vertices) {
-  piece_count_ = static_cast<int>(vertices.size());
-  if (vertices.empty()) return;
   if (piece_vertices_.assign(vertices))
     glVertexArrayVertexBuffer(piece_mesh_.id(), 0, piece_vertices_.id(), 0, sizeof(PieceVertex));
 }
 
-void PlanePass::draw(const SceneFrame& frame, int light, Part part, const Slabs& s, const std::vector<glm::vec4>& clip) {
-  if (part != Part::lattice && part != Part::cut_slabs && piece_count_ == 0) return;
-  const char* vertex = part == Part::lattice     ? "methods/kit/planes/planes.vert.glsl"
-                       : part == Part::cut_slabs ? "methods/kit/frame/fullscreen.vert.glsl"
-                                                 : "methods/kit/planes/piece_planes.vert.glsl";
+const char* PlanePass::vertex_stage(Part part) {
+  return part == Part::lattice     ? "methods/kit/planes/planes.vert.glsl"
+         : part == Part::cut_slabs ? "methods/kit/frame/fullscreen.vert.glsl"
+                                   : "methods/kit/planes/piece_planes.vert.glsl";
+}
+
+void PlanePass::draw(const SceneFrame& frame, int light, Part part, const LightPlan& plan) {
   const gpu::Program& program = gpu::cached_program(
-      {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, "methods/kit/planes/planes.frag.glsl"}},
+      {{GL_VERTEX_SHADER, vertex_stage(part)}, {GL_FRAGMENT_SHADER, fragment_stage}},
       frame.defines() + defines(frame, light, part));
   glUseProgram(program.id());
   gpu::set_uniform(program, "shared_light", light);
-  gpu::set_uniform(program, "dz", s.dz);
-  if (part == Part::cut_slabs) {
-    gpu::set_uniform(program, "plane_count", s.count);
+  gpu::set_uniform(program, "dz", plan.slabs.dz);
+  if (part == Part::cut_slabs) {  // full screen, the shader finding the slab the surface cuts
+    gpu::set_uniform(program, "plane_count", plan.slabs.count);
+    glDisable(GL_DEPTH_TEST);
     glBindVertexArray(no_vertices_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
     return;
   }
-  gpu::set_uniform(program, "clip_planes", clip);
-  gpu::set_uniform(program, "clip_count", static_cast<int>(clip.size()));
-  gpu::set_uniform(program, "clip_margin", reach(s));
+  gpu::set_uniform(program, "clip_planes", plan.clip);
+  gpu::set_uniform(program, "clip_count", static_cast<int>(plan.clip.size()));
+  gpu::set_uniform(program, "clip_margin", reach(plan.slabs));
   if (part != Part::lattice) {
+    const std::vector<PieceVertex>& pieces = part == Part::fully_lit ? plan.pieces.fully_lit : plan.pieces.uncertain;
+    upload(pieces);
+    glEnable(GL_CULL_FACE);  // the pieces' triangles face the eye (slab_pieces.cpp)
     glBindVertexArray(piece_mesh_.id());
-    glDrawArrays(GL_TRIANGLES, 0, piece_count_);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(pieces.size()));
+    glDisable(GL_CULL_FACE);
     return;
   }
   gpu::set_uniform(program, "lattice", std::max(settings_.lattice, 1));
   glBindVertexArray(mesh_.id());
-  glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, s.count);
+  glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, plan.slabs.count);
 }
 
 std::vector<std::pair<std::string, double>> PlanePass::stats() const {

@@ -31,8 +31,8 @@ enum class PlaneCut { none, clip, gamma };
 // at the middle of its slab: no lattice, no jitter.
 std::vector<SettingSpec> plane_settings(bool cut = false);
 
-// The hybrids' slab pieces (SlabPieces, one light at a time): the planes'
-// polygons cut by the casters' bounding volumes, on the CPU and the GPU.
+// The hybrids' slab pieces (SlabPieces, the trees one light at a time): the
+// planes' polygons cut by the casters' bounding volumes, on the CPU and the GPU.
 std::vector<MemoryNeed> slab_piece_needs(const Scene& scene, const Settings& settings, int width, int height);
 
 struct PlaneSettings {
@@ -55,7 +55,13 @@ public:
   // through the scene on the CPU); needs a current context.
   void prepare(const Scene& scene);
 
-  // L_air into `target`; the frame must be bound (SceneFrame::bind).
+  // The frame's planes on the CPU — each light's slabs and, for the hybrids,
+  // its slab pieces — and the start of linking the programs that will draw
+  // them (gpu::link_ahead), before the frame's passes (GpuMethod::link_ahead):
+  // which parts a light draws depends on its pieces, and the GLSL compiler
+  // then runs beside the frame's earlier passes.
+  void plan(const SceneFrame& frame);
+  // L_air into `target` as planned; the frame must be bound (SceneFrame::bind).
   void run(const SceneFrame& frame, const gpu::Texture& target);
 
   // Of the last run: planes, fragment shader invocations (the planes' fragments
@@ -73,10 +79,18 @@ private:
   Slabs slabs(const LightBounds& volume) const;
   float reach(const Slabs& s) const;
   enum class Part { lattice, fully_lit, uncertain, cut_slabs };
+  // A light's planes this frame: its slabs (none where it lights nothing in
+  // view), clip planes, and the hybrids' pieces.
+  struct LightPlan {
+    Slabs slabs;
+    std::vector<glm::vec4> clip;
+    SlabPieces::Pieces pieces;
+  };
+  LightPlan plan_light(const SceneFrame& frame, int light, const LightBounds& volume);
+  std::vector<Part> parts(const LightPlan& plan) const;  // what the light draws, in order
   std::string defines(const SceneFrame& frame, int light, Part part) const;
-  void draw_light(const SceneFrame& frame, int light, const LightBounds& volume);
-  void draw_pieces(const SceneFrame& frame, int light, const Slabs& s, const std::vector<glm::vec4>& clip);
-  void draw(const SceneFrame& frame, int light, Part part, const Slabs& s, const std::vector<glm::vec4>& clip);
+  static const char* vertex_stage(Part part);
+  void draw(const SceneFrame& frame, int light, Part part, const LightPlan& plan);
   void upload(const std::vector<PieceVertex>& vertices);
 
   PlaneSettings settings_;
@@ -85,11 +99,11 @@ private:
   float cos_edge_ = 1.0f;  // the smallest cos(ray, forward) in the image
   FrameLightBounds light_bounds_;
   SlabPieces slab_pieces_;
+  std::vector<LightPlan> plans_;  // per light, by plan()
   gpu::Texture noise_;
   gpu::VertexArray mesh_, piece_mesh_, no_vertices_;
   gpu::Buffer indices_;
   gpu::GrowingBuffer<PieceVertex> piece_vertices_{2};
-  int piece_count_ = 0;
   gpu::Framebuffer fbo_;
   gpu::InvocationCounter invocations_;
   int index_count_ = 0;

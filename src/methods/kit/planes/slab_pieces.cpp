@@ -209,8 +209,8 @@ void SlabPieces::reset() {
   nodes_ = seconds_ = 0.0;
 }
 
-void SlabPieces::build(const FrameInputs& inputs, int light, int count, float dz, float margin,
-                        const std::vector<glm::vec4>& clip) {
+SlabPieces::Pieces SlabPieces::build(const FrameInputs& inputs, int light, int count, float dz, float margin,
+                                     const std::vector<glm::vec4>& clip) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<geometry::BoundingVolumes> posed = volumes_;
   for (size_t k = 0; k < posed.size(); ++k) {
@@ -236,14 +236,14 @@ void SlabPieces::build(const FrameInputs& inputs, int light, int count, float dz
     const double z = (float(k) + 0.5f) * dz;
     slabs[k] = partitioned(regions, camera, clipped(cross_section(camera, aspect, z), clip), k);
   });
-  fully_lit_.clear();
-  uncertain_.clear();
+  Pieces pieces;
   for (const Slab& slab : slabs) {
-    fully_lit_.insert(fully_lit_.end(), slab.fully_lit.begin(), slab.fully_lit.end());
-    uncertain_.insert(uncertain_.end(), slab.uncertain.begin(), slab.uncertain.end());
+    pieces.fully_lit.insert(pieces.fully_lit.end(), slab.fully_lit.begin(), slab.fully_lit.end());
+    pieces.uncertain.insert(pieces.uncertain.end(), slab.uncertain.begin(), slab.uncertain.end());
     for (int r = 0; r < 3; ++r) polygons_[r] += slab.polygons[r];
   }
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return pieces;
 }
 
 std::vector<std::pair<std::string, double>> SlabPieces::stats() const {

@@ -42,10 +42,11 @@ public:
   // boxes grown or shrunk by margin), then planes 0 … count − 1 of spacing dz, clipped to
   // the half-spaces dot(xyz, x) + w >= 0 (the light's influence, widened as the planes'
   // clip distances are), partitioned into triangles.
-  void build(const FrameInputs& inputs, int light, int count, float dz, float margin,
-             const std::vector<glm::vec4>& clip);
-  const std::vector<PieceVertex>& fully_lit() const { return fully_lit_; }
-  const std::vector<PieceVertex>& uncertain() const { return uncertain_; }
+  struct Pieces {
+    std::vector<PieceVertex> fully_lit, uncertain;
+  };
+  Pieces build(const FrameInputs& inputs, int light, int count, float dz, float margin,
+               const std::vector<glm::vec4>& clip);
 
   // Summed over the lights since reset(): piece polygons per region, the trees' nodes, build seconds.
   void reset();
@@ -54,7 +55,6 @@ public:
 private:
   std::vector<geometry::BoundingVolumes> volumes_;
   std::vector<int> meshes_;  // index into Scene::meshes per volume
-  std::vector<PieceVertex> fully_lit_, uncertain_;
   double polygons_[3] = {0.0, 0.0, 0.0};
   double nodes_ = 0.0, seconds_ = 0.0;
 };
