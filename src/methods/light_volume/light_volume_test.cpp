@@ -83,21 +83,21 @@ TEST_P(LightVolumeScenes, GridAtTheMapsResolutionNoWorseThanRaymarch256) {
 INSTANTIATE_TEST_SUITE_P(Scenes, LightVolumeScenes, ::testing::Values("biri_sphere", "teapot_spot", "three_lights"),
                          [](const auto& info) { return std::string(info.param); });
 
-// A grid finer than the map holds nothing more (a vertex per texel): it is
-// clamped to the map, said once in a warning, not silently.
-// A cold first frame on three_lights links its fifteen largest programs ahead
-// on the worker (GpuMethod::link_ahead), each of them then used: the mesh's
-// for a spot and for a directional map (grid vertices, extra vertices, grid
-// and extra triangles, eye count) and for a cube (no extra vertices), and the
-// lit intervals' resolve.
+// A cold first frame on three_lights links sixteen programs ahead on the
+// worker (GpuMethod::link_ahead), each of them then used: the mesh's for a
+// spot and for a directional map (grid vertices, extra vertices, grid and
+// extra triangles, eye count) and for a cube (no extra vertices), the
+// crossings' draw and the lit intervals' resolve.
 TEST(LightVolume, FirstFrameLinksAheadTheMeshOfEachKindOfLight) {
   gpu::clear_program_cache();
   const int ahead = gpu::linked_ahead_count();
   kit::test::render(find_method("light_volume"), builtin_scene("three_lights"), {}, 32, 24);
-  EXPECT_EQ(gpu::linked_ahead_count(), ahead + 15);
+  EXPECT_EQ(gpu::linked_ahead_count(), ahead + 16);
   EXPECT_EQ(gpu::programs_linking(), 0) << "a program linked ahead was not the one the frame used";
 }
 
+// A grid finer than the map holds nothing more (a vertex per texel): it is
+// clamped to the map, said once in a warning, not silently.
 TEST(LightVolume, AGridFinerThanTheMapIsClampedWithAWarning) {
   const Scene scene = builtin_scene("teapot_spot");
   const CapturedWarnings warnings;

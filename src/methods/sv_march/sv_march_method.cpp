@@ -13,6 +13,12 @@ namespace airlight::methods {
 namespace {
 
 constexpr GLuint shell_eye_binding = kit::binding::first_free_storage;
+constexpr const char* bounds_vertex = "methods/kit/counting/crossings.vert.glsl";
+constexpr const char* bounds_fragment = "methods/sv_march/sv_bounds.frag.glsl";
+
+std::string bounds_defines(const kit::SceneFrame& frame) {
+  return frame.defines() + kit::lit_interval_defines() + kit::CountedDraw::defines();
+}
 
 // What sv_march.comp.glsl needs besides the march's: the eye counts' binding
 // and lit_gamma.glsl's samples.
@@ -44,6 +50,7 @@ private:
 
   void link_ahead(const kit::SceneFrame& frame) override {
     shell_.link_ahead(frame);  // built first
+    gpu::link_ahead({{GL_VERTEX_SHADER, bounds_vertex}, {GL_FRAGMENT_SHADER, bounds_fragment}}, bounds_defines(frame));
     march_.link_ahead(frame);
   }
   void build_frame(const kit::SceneFrame& frame, gpu::PassTimer& timer) override { shell_.build(frame, timer); }
@@ -73,10 +80,8 @@ private:
     for (int layer = 0; layer < layers_; ++layer)
       glClearTexSubImage(bounds_.id(), 0, 0, 0, layer, frame.width(), frame.height(), 1, GL_RED_INTEGER, GL_UNSIGNED_INT,
                          layer % 2 == 0 ? &infinity : &zero);
-    const gpu::Program& program = gpu::cached_program({{GL_VERTEX_SHADER, "methods/kit/counting/crossings.vert.glsl"},
-                                                       {GL_FRAGMENT_SHADER, "methods/sv_march/sv_bounds.frag.glsl"}},
-                                                      frame.defines() + kit::lit_interval_defines() +
-                                                          kit::CountedDraw::defines());
+    const gpu::Program& program =
+        gpu::cached_program({{GL_VERTEX_SHADER, bounds_vertex}, {GL_FRAGMENT_SHADER, bounds_fragment}}, bounds_defines(frame));
     glBindImageTexture(0, bounds_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
     draw_.draw(frame, program, *shell_.triangles().on_gpu, shell_.triangle_count());
   }

@@ -13,6 +13,8 @@ constexpr GLuint end_of_list = 0xffffffffu;
 constexpr size_t node_bytes = 3 * sizeof(GLuint);
 
 constexpr const char* resolve_program = "methods/kit/counting/lit_intervals.comp.glsl";
+constexpr const char* crossings_vertex = "methods/kit/counting/crossings.vert.glsl";
+constexpr const char* crossings_fragment = "methods/kit/counting/crossings.frag.glsl";
 
 }  // namespace
 
@@ -58,10 +60,17 @@ std::string LitIntervalPass::defines() const {
   return d;
 }
 
-// The resolve's program's: the frame's and the pass's.
+// The resolve's program's: the frame's and the pass's; the crossings' draw's, with the counted draw's.
 std::string LitIntervalPass::resolve_defines(const SceneFrame& frame) const { return frame.defines() + defines(); }
+std::string LitIntervalPass::crossings_defines(const SceneFrame& frame) const {
+  return resolve_defines(frame) + CountedDraw::defines();
+}
 
+// The crossings' draw and the resolve, which every frame uses (the cull only
+// when there are triangles, known after the frame's build).
 void LitIntervalPass::link_ahead(const SceneFrame& frame) const {
+  gpu::link_ahead({{GL_VERTEX_SHADER, crossings_vertex}, {GL_FRAGMENT_SHADER, crossings_fragment}},
+                  crossings_defines(frame));
   gpu::link_compute_ahead(resolve_program, resolve_defines(frame));
 }
 
@@ -111,8 +120,7 @@ void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles
   glNamedBufferSubData(node_count_.id(), 0, sizeof(counters), counters);
   crossings_ = 0;
   const gpu::Program& program = gpu::cached_program(
-      {{GL_VERTEX_SHADER, "methods/kit/counting/crossings.vert.glsl"}, {GL_FRAGMENT_SHADER, "methods/kit/counting/crossings.frag.glsl"}},
-      frame.defines() + defines() + CountedDraw::defines());
+      {{GL_VERTEX_SHADER, crossings_vertex}, {GL_FRAGMENT_SHADER, crossings_fragment}}, crossings_defines(frame));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
   glBindImageTexture(0, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);

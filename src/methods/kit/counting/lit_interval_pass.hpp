@@ -62,6 +62,7 @@ private:
   void allocate_pool(size_t nodes);
   std::string defines() const;
   std::string resolve_defines(const SceneFrame& frame) const;
+  std::string crossings_defines(const SceneFrame& frame) const;
 
   double capacity_per_pixel_;
   int samples_;
