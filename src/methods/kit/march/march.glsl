@@ -354,10 +354,12 @@ vec3 light_guide_of(int i, vec3 dir, float d) {
   return LIGHT(i).color * guide;
 }
 
+// One copy per light structure (FOR_EACH_LIGHT_SHARED), not per light: each
+// copy is paid in llvmpipe's compile of the first frame.
 vec3 light_guide(vec3 dir, float d) {
   vec3 guide = vec3(0.0);
 #define ADD_LIGHT_GUIDE(i) guide += light_guide_of(i, dir, d);
-  FOR_EACH_LIGHT(ADD_LIGHT_GUIDE)
+  FOR_EACH_LIGHT_SHARED(ADD_LIGHT_GUIDE)
 #undef ADD_LIGHT_GUIDE
   return guide;
 }
