@@ -40,6 +40,9 @@ public:
   virtual void link_ahead(const SceneFrame& frame) const { (void)frame; }
   virtual CountedTriangles triangles() const = 0;
   virtual EyeCounts eye_counts() const = 0;
+  // Whether eye_counts() may hold planes through the eye (EyeCounts::planes):
+  // the lit-interval pass compiles their test only then.
+  virtual bool has_eye_planes() const = 0;
   // Whether the frame must draw the lights' shadow maps for build().
   virtual bool uses_shadow_maps() const = 0;
   // Counters for the report, the build's time among them.
@@ -71,6 +74,7 @@ public:
   void build(const SceneFrame& frame, gpu::PassTimer&) override { build(frame.inputs()); }
   CountedTriangles triangles() const final { return {triangles_, nullptr, triangles_.size()}; }
   EyeCounts eye_counts() const final { return eye_; }
+  bool has_eye_planes() const final { return true; }  // take_planes_at_eye
   bool uses_shadow_maps() const final { return false; }
 
 protected:

@@ -3,6 +3,7 @@
 #include "core/warning.hpp"
 #include "gpu/program.hpp"
 
+#include <airlight/error.hpp>
 #include <algorithm>
 #include <cstdio>
 
@@ -45,8 +46,8 @@ std::vector<MemoryNeed> crossing_pool_needs(const Settings& settings, int width,
            double(width) * height * capacity * node_bytes}};
 }
 
-LitIntervalPass::LitIntervalPass(const Settings& s)
-    : capacity_per_pixel_(s.real("capacity")), samples_(s.integer("samples")) {}
+LitIntervalPass::LitIntervalPass(const Settings& s, bool eye_planes)
+    : capacity_per_pixel_(s.real("capacity")), samples_(s.integer("samples")), eye_planes_(eye_planes) {}
 
 void LitIntervalPass::prepare() {
   counted_draw_.prepare();
@@ -57,6 +58,7 @@ void LitIntervalPass::prepare() {
 std::string LitIntervalPass::defines() const {
   std::string d = lit_interval_defines() + "#define SAMPLES " + std::to_string(samples_) + "\n";
   if (loop_limit_) d += "#define LOOP_LIMIT " + std::to_string(gpu::software_loop_limit) + "\n";
+  if (eye_planes_) d += "#define EYE_PLANES\n";
   return d;
 }
 
@@ -135,6 +137,7 @@ void LitIntervalPass::resolve(const SceneFrame& frame, const EyeCounts& eye, con
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
   gpu::set_uniform(program, "eye_counts", eye.counts);
+  if (!eye_planes_ && !eye.planes.empty()) throw Failure("lit intervals: planes through the eye from a geometry without them");
   gpu::set_uniform(program, "eye_plane_count", static_cast<int>(eye.planes.size()));
   if (!eye.planes.empty()) {
     std::vector<glm::vec4> planes;

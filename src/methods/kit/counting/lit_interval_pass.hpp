@@ -36,7 +36,9 @@ std::vector<SettingSpec> lit_interval_settings();
 std::vector<MemoryNeed> crossing_pool_needs(const Settings& settings, int width, int height);
 class LitIntervalPass final : public CrossingPass {
 public:
-  explicit LitIntervalPass(const Settings& settings);
+  // eye_planes: whether the geometry's eye counts may hold planes through
+  // the eye (CrossingGeometry::has_eye_planes).
+  LitIntervalPass(const Settings& settings, bool eye_planes);
 
   void prepare() override;
   // The resolve's program: the largest of the pass.
@@ -66,6 +68,7 @@ private:
 
   double capacity_per_pixel_;
   int samples_;
+  bool eye_planes_;  // EYE_PLANES
   gpu::GrowingBuffer<CountedTriangle> triangles_;  // a geometry's from the CPU
   gpu::Buffer nodes_, node_count_;
   size_t node_capacity_ = 0;

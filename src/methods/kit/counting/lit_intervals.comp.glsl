@@ -26,19 +26,26 @@ layout(r32ui, binding = 1) readonly uniform uimage2D heads;
 #endif
 
 uniform int eye_counts[LIGHT_COUNT > 0 ? LIGHT_COUNT : 1];  // each light's count at the eye (GLSL has no empty arrays)
+#ifdef EYE_PLANES
 // The counted planes through the eye (lit_interval_pass.hpp, take_planes_at_eye):
 // xyz the normal, w the light; a ray crosses one at t = 0, by its weight where
 // n·dir > 0. Uniforms, not defines: an eye on a plane for one frame must not
-// compile the program again.
+// compile the program again. Only a geometry that may have such planes
+// (CrossingGeometry::has_eye_planes) compiles their loop: on llvmpipe each
+// light structure's copy of it cost about 0.1 s of the first dispatch
+// (docs/decisions.md "The first frame (issue 28)").
 const int MAX_EYE_PLANES = 8;
 uniform vec4 eye_planes[MAX_EYE_PLANES];
 uniform int eye_plane_weights[MAX_EYE_PLANES];
 uniform int eye_plane_count;
+#endif
 
 int count_at_eye(int i, vec3 dir) {
   int count = eye_counts[LIGHT_DATA(i)];
+#ifdef EYE_PLANES
   for (int k = 0; k < eye_plane_count; ++k)
     if (int(eye_planes[k].w) == LIGHT_DATA(i) && dot(eye_planes[k].xyz, dir) > 0.0) count += eye_plane_weights[k];
+#endif
   return count;
 }
 

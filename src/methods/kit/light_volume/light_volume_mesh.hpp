@@ -121,6 +121,7 @@ public:
   // Per light: 0 if the frame's eye is inside its lit volume, 1 if not (read
   // from the GPU, where the eye's cell of the mesh decides it); no planes through the eye.
   EyeCounts eye_counts() const override;
+  bool has_eye_planes() const override { return false; }  // the eye's cell decides
   const gpu::Buffer& eye_count_buffer() const { return eye_counts_.buffer(); }  // the same on the GPU: one int per light
   bool uses_shadow_maps() const override { return true; }
   // volume_triangles (this frame's) and volume_s (seconds()).

@@ -443,7 +443,7 @@ TEST(LightVolumeAirlight, CountingTheMeshGivesRaymarchsImage) {
       LightVolumeMesh mesh(s, Depth::texel);
       mesh.prepare(scene);
       mesh.build(frame, timer);
-      LitIntervalPass pass{Settings(lit_interval_settings())};
+      LitIntervalPass pass{Settings(lit_interval_settings()), mesh.has_eye_planes()};
       pass.prepare();
       const gpu::Texture target = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, w, h);
       pass.run(frame, mesh, target, timer);
