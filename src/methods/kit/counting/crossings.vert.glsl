@@ -72,14 +72,17 @@ vec4 grown_homogeneous_corner(vec4 clip[3], int k) {
     dvec3 l = cross(v[(i + 1) % 3], v[(i + 2) % 3]);
     line[i] = l + dvec3(0.0, 0.0, orientation * COVER_MARGIN * length(l.xy));
   }
-  // The three lines bound four triangles of the projective plane; grown, they bound the one
-  // around this triangle while their determinant keeps its sign (volume² at a margin of 0).
-  // Where the triangle reaches behind the eye its part in view is unbounded, and pushing its
-  // lines out shrinks the triangle of its projected corners, until the lines meet in a point
-  // and the grown triangle would become that one: then the whole view is drawn, the exact test
-  // deciding.
-  if (!(dot(line[0], cross(line[1], line[2])) > 0.0)) return vec4(k == 1 ? 3.0 : -1.0, k == 2 ? 3.0 : -1.0, 0.0, 1.0);
-  dvec3 corner = orientation * cross(line[(k + 1) % 3], line[(k + 2) % 3]);
+  // The grown triangle is the intersection of the grown half-planes: the points x where each
+  // line_i · x has the orientation's sign. The corners' cone is that set when they are signed
+  // by the lines' determinant too: volume² at a margin of 0, it changes sign where the triangle
+  // reaches behind the eye and the lines, pushed out, pass the projected corner opposite one of
+  // them (its part in view is unbounded, and that corner's triangle shrinks). Taken as +1 there,
+  // the cone was the complement, and three_lights lost pixels. Three lines through one point
+  // bound no triangle: then the whole view is drawn, the exact test deciding.
+  double turn = sign(dot(line[0], cross(line[1], line[2])));
+  if (orientation == 0.0) return vec4(0.0, 0.0, 0.0, 1.0);
+  if (turn == 0.0) return vec4(k == 1 ? 3.0 : -1.0, k == 2 ? 3.0 : -1.0, 0.0, 1.0);
+  dvec3 corner = orientation * turn * cross(line[(k + 1) % 3], line[(k + 2) % 3]);
   corner /= length(corner);  // within float's range; the point is the same
   return vec4(vec2(corner.xy) / half_size, 0.0, float(corner.z));
 }
