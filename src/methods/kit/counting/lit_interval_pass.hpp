@@ -41,7 +41,7 @@ public:
   LitIntervalPass(const Settings& settings, bool eye_planes);
 
   void prepare() override;
-  // The resolve's program: the largest of the pass.
+  // The crossings' draw and the resolve (the cull waits: it runs only when there are triangles).
   void link_ahead(const SceneFrame& frame) const override;
 
   // The crossings of the geometry's triangles (uploaded first if on the CPU)
