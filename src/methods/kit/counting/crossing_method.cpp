@@ -7,9 +7,9 @@ CrossingMethod::CrossingMethod(const Settings& settings, std::unique_ptr<Crossin
     : GpuMethod(settings), geometry_(std::move(geometry)), pass_(std::move(pass)) {}
 
 CrossingMethod::CrossingMethod(const Settings& settings, std::unique_ptr<CrossingGeometry> geometry)
-    : CrossingMethod(settings, std::move(geometry), nullptr) {
-  pass_ = std::make_unique<LitIntervalPass>(settings, geometry_->has_eye_planes());
-}
+    : GpuMethod(settings),
+      geometry_(std::move(geometry)),
+      pass_(std::make_unique<LitIntervalPass>(settings, geometry_->has_eye_planes())) {}
 
 void CrossingMethod::prepare_airlight(const Scene& scene) {
   geometry_->prepare(scene);
