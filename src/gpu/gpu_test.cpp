@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <thread>
 #include <vector>
 
 namespace airlight::gpu {
@@ -245,6 +246,68 @@ TEST(Gpu, CompileErrorsOnTheWorkerAreThrownWhereTheProgramIsAskedFor) {
   clear_program_cache();
   cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 3.0\n");
   EXPECT_EQ(linked_ahead_count(), ahead) << "cleared, it was linked again in place";
+}
+
+// A Warm runs on the worker right after the link, in the worker's context,
+// with the program the cache then gives, and is counted when that is taken.
+TEST(Gpu, WarmRunsOnTheWorkerWithTheLinkedProgram) {
+  Context& context = Context::headless();
+  const std::string defines = "#define SCALE 0.5\n";
+  const int warmed = warmed_count();
+  GLuint warmed_id = 0;
+  std::thread::id warmed_on;
+  link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines, [&](const Program& p) {
+    warmed_id = p.id();  // read after cached_compute_program has waited for the link
+    warmed_on = std::this_thread::get_id();
+  });
+  const Program& linked = cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines);
+  EXPECT_EQ(warmed_id, linked.id());
+  EXPECT_NE(warmed_on, std::this_thread::get_id());
+  EXPECT_EQ(warmed_count(), warmed + 1);
+  context.check("warm");
+}
+
+// Work in the worker's context sees what this context wrote before it, and
+// this context sees what the work wrote; without an error in between.
+TEST(Gpu, WorkInTheWorkerContextIsOrderedWithThisContexts) {
+  Context& context = Context::headless();
+  const Program& program = cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 2.0\n");
+  constexpr int count = 100;
+  const Buffer mine = make_buffer(count * sizeof(float), nullptr), theirs = make_buffer(count * sizeof(float), nullptr);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mine.id());
+  glUseProgram(program.id());
+  set_uniform(program, "count", count);
+  glDispatchCompute(2, 1, 1);
+  std::vector<float> seen(count);
+  std::thread::id ran_on;
+  run_in_worker_context([&] {
+    ran_on = std::this_thread::get_id();
+    glGetNamedBufferSubData(mine.id(), 0, count * sizeof(float), seen.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, theirs.id());
+    glUseProgram(program.id());
+    set_uniform(program, "count", count / 2);
+    glDispatchCompute(2, 1, 1);
+  });
+  EXPECT_NE(ran_on, std::this_thread::get_id());
+  EXPECT_EQ(seen[9], 162.0f);  // 2·9²
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> written(count);
+  glGetNamedBufferSubData(theirs.id(), 0, count * sizeof(float), written.data());
+  EXPECT_EQ(written[49], 4802.0f);  // 2·49², within the worker's count of 50
+  context.check("worker context");
+}
+
+// What the work throws, and a GL error it raises, are thrown here; the
+// worker goes on with the next.
+TEST(Gpu, WorkerContextErrorsAreThrownHere) {
+  Context::headless();
+  EXPECT_EQ(failure_text([] { run_in_worker_context([] { throw Failure("from the worker"); }); }),
+            "from the worker");
+  EXPECT_EQ(failure_text([] { run_in_worker_context([] { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1u << 20, 0); }); }),
+            "GL error 0x0501 in a pass in the worker's context");
+  bool ran = false;
+  run_in_worker_context([&] { ran = true; });
+  EXPECT_TRUE(ran);
 }
 
 // stop_linking ends the worker after what it was asked to link (the viewer

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 #include <condition_variable>
+#include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <future>
@@ -101,6 +102,36 @@ std::string expand_source(const std::string& name, const std::string& defines) {
 
 namespace {
 
+// The worker's context has no debug output (Context::check): its GL errors,
+// as Failure naming `what`.
+void throw_gl_errors(const std::string& what) {
+  std::string errors;
+  char code[16];
+  for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError()) {
+    std::snprintf(code, sizeof code, "0x%04x", e);
+    errors += std::string(errors.empty() ? "" : ", ") + code;
+  }
+  if (!errors.empty()) throw Failure("GL error " + errors + " in " + what);
+}
+
+// Unbinds whatever a job bound in the worker's context: an object a binding
+// there held would outlive its deletion in the caller's (a method's pools
+// and targets, hundreds of megabytes).
+void unbind_all() {
+  GLint ssbos = 0, images = 0, textures = 0, ubos = 0;
+  glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &ssbos);
+  glGetIntegerv(GL_MAX_IMAGE_UNITS, &images);
+  glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &textures);
+  glGetIntegerv(GL_MAX_UNIFORM_BUFFER_BINDINGS, &ubos);
+  glUseProgram(0);
+  glBindBuffersBase(GL_SHADER_STORAGE_BUFFER, 0, ssbos, nullptr);
+  glBindBuffersBase(GL_UNIFORM_BUFFER, 0, ubos, nullptr);
+  glBindImageTextures(0, images, nullptr);
+  glBindTextures(0, textures, nullptr);
+  glBindSamplers(0, textures, nullptr);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+}
+
 // Compiles `stages` and links them into `program`; throws Failure with the log.
 void link_into(const Program& program, const std::vector<Stage>& stages, const std::string& defines) {
   std::vector<Shader> shaders;
@@ -167,12 +198,15 @@ std::string program_key(std::initializer_list<Stage> stages, const std::string& 
 // and the task's types built on it stay out of libairlight's exports.
 struct Linked {
   Program program;
+  bool warmed;
 };
 
 // One thread that compiles and links in a context sharing the caller's
-// objects. llvmpipe spends about half of a large program's compile in the
-// link (GLSL to NIR, docs/decisions.md); the other half, the machine code, it
-// generates at the first draw on the drawing thread, so only the link moves.
+// objects, and runs the jobs run_in_worker_context gives it there, in order.
+// llvmpipe spends about half of a large program's compile in the link (GLSL
+// to NIR, docs/decisions.md); the other half, the machine code, it generates
+// at the first dispatch for the context that dispatches: a program warmed
+// here (Warm) is then dispatched here.
 class Linker {
 public:
   // The linker of the current context's worker, started on first use;
@@ -210,20 +244,31 @@ public:
     thread_.join();
   }
 
-  std::future<Linked> link(std::vector<Stage> stages, std::string defines) {
-    std::packaged_task<Linked()> job([stages = std::move(stages), defines = std::move(defines)] {
-      Program program(glCreateProgram());
-      link_into(program, stages, defines);
-      glFinish();  // the link is complete before another context uses the program
-      return Linked{std::move(program)};
-    });
-    std::future<Linked> linked = job.get_future();
+  std::future<Linked> link(std::vector<Stage> stages, std::string defines, Warm warm) {
+    auto job = std::make_shared<std::packaged_task<Linked()>>(
+        [stages = std::move(stages), defines = std::move(defines), warm = std::move(warm)] {
+          Program program(glCreateProgram());
+          link_into(program, stages, defines);
+          if (warm) warm(program);
+          throw_gl_errors("warming " + stages.front().name);
+          glFinish();  // the link is complete before another context uses the program
+          return Linked{std::move(program), static_cast<bool>(warm)};
+        });
+    std::future<Linked> linked = job->get_future();
+    queue(std::packaged_task<void()>([job] { (*job)(); }));
+    return linked;
+  }
+
+  bool on_its_thread() const { return std::this_thread::get_id() == thread_.get_id(); }
+
+  std::future<void> queue(std::packaged_task<void()> job) {
+    std::future<void> done = job.get_future();
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       jobs_.push_back(std::move(job));
     }
     ready_.notify_one();
-    return linked;
+    return done;
   }
 
 private:
@@ -239,10 +284,11 @@ private:
             std::unique_lock<std::mutex> lock(mutex_);
             ready_.wait(lock, [this] { return !jobs_.empty() || stopping_; });
             if (jobs_.empty()) break;
-            std::packaged_task<Linked()> job = std::move(jobs_.front());
+            std::packaged_task<void()> job = std::move(jobs_.front());
             jobs_.pop_front();
             lock.unlock();
             job();  // a compile or link error is the future's, thrown where the program is asked for
+            unbind_all();
           }
           worker.release();
         }) {}
@@ -250,7 +296,7 @@ private:
   const Context* context_;
   std::mutex mutex_;
   std::condition_variable ready_;
-  std::deque<std::packaged_task<Linked()>> jobs_;
+  std::deque<std::packaged_task<void()>> jobs_;
   bool stopping_ = false;
   std::thread thread_;  // last: it starts once everything it uses exists
 };
@@ -262,17 +308,47 @@ std::map<std::string, std::future<Linked>>& linking() {
 }
 
 int taken_ahead = 0;  // programs cached_program took from the Linker
+int taken_warmed = 0;  // of those, the ones warmed on the worker
 
 }  // namespace
 
-void link_ahead(std::initializer_list<Stage> stages, const std::string& defines) {
+void link_ahead(std::initializer_list<Stage> stages, const std::string& defines, Warm warm) {
   const std::string key = program_key(stages, defines);
   if (program_cache().count(key) || linking().count(key)) return;
-  if (Linker* linker = Linker::instance()) linking().emplace(key, linker->link({stages}, defines));
+  if (Linker* linker = Linker::instance()) linking().emplace(key, linker->link({stages}, defines, std::move(warm)));
 }
 
-void link_compute_ahead(const std::string& name, const std::string& defines) {
-  link_ahead({{GL_COMPUTE_SHADER, name}}, defines);
+void link_compute_ahead(const std::string& name, const std::string& defines, Warm warm) {
+  link_ahead({{GL_COMPUTE_SHADER, name}}, defines, std::move(warm));
+}
+
+void run_in_worker_context(const std::function<void()>& work) {
+  Linker* linker = Linker::instance();
+  if (!linker || linker->on_its_thread()) {  // none, or already there
+    work();
+    return;
+  }
+  // Server-side waits: on a GPU neither thread waits for the other's commands
+  // to execute (llvmpipe waits on the CPU, where its commands run).
+  GLsync before = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), after = nullptr;
+  glFlush();
+  std::future<void> done = linker->queue(std::packaged_task<void()>([&] {
+    glWaitSync(before, 0, GL_TIMEOUT_IGNORED);
+    work();
+    after = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    glFlush();
+    throw_gl_errors("a pass in the worker's context");
+  }));
+  try {
+    done.get();
+  } catch (...) {
+    glDeleteSync(before);
+    if (after) glDeleteSync(after);
+    throw;
+  }
+  glWaitSync(after, 0, GL_TIMEOUT_IGNORED);
+  glDeleteSync(after);
+  glDeleteSync(before);
 }
 
 const Program& cached_program(std::initializer_list<Stage> stages, const std::string& defines) {
@@ -286,6 +362,7 @@ const Program& cached_program(std::initializer_list<Stage> stages, const std::st
   linking().erase(pending);
   Linked taken = linked.get();  // throws the worker's compile or link error
   ++taken_ahead;
+  if (taken.warmed) ++taken_warmed;
   return cache.emplace(key, std::move(taken.program)).first->second;
 }
 
@@ -296,6 +373,8 @@ const Program& cached_compute_program(const std::string& name, const std::string
 int cached_program_count() { return static_cast<int>(program_cache().size()); }
 
 int linked_ahead_count() { return taken_ahead; }
+
+int warmed_count() { return taken_warmed; }
 
 int programs_linking() { return static_cast<int>(linking().size()); }
 

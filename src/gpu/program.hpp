@@ -11,6 +11,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -43,12 +44,26 @@ const Program& cached_compute_program(const std::string& name, const std::string
 // engine's context) it does nothing and cached_program links as before. Only
 // what a frame is sure to use belongs here: a program linked ahead and never
 // asked for is never counted or freed until clear_program_cache.
-void link_ahead(std::initializer_list<Stage> stages, const std::string& defines = "");
-void link_compute_ahead(const std::string& name, const std::string& defines = "");
+//
+// `warm`, when given, runs on the worker right after the link, in the
+// worker's context: a dispatch there makes llvmpipe generate the program's
+// machine code beside the frame's earlier passes, as the link is. That code
+// is the worker context's alone (llvmpipe compiles per context), so a warmed
+// program is then dispatched by run_in_worker_context, every frame.
+using Warm = std::function<void(const Program&)>;
+void link_ahead(std::initializer_list<Stage> stages, const std::string& defines = "", Warm warm = {});
+void link_compute_ahead(const std::string& name, const std::string& defines = "", Warm warm = {});
+// Runs `work` on the worker's thread in the worker's context, after what it
+// was asked before, and returns when it is done (rethrowing what it threw, and
+// a GL error it raised as Failure). Fences order it after this context's
+// commands so far and before the ones after. Without a worker, runs it here.
+void run_in_worker_context(const std::function<void()>& work);
 // Programs the cache has compiled so far in this process.
 int cached_program_count();
 // Of those, the ones a worker linked ahead (link_ahead).
 int linked_ahead_count();
+// Of those, the ones it also warmed (link_ahead's Warm).
+int warmed_count();
 // Programs linked ahead that cached_program has not been asked for yet: 0
 // after a frame that used everything it linked ahead.
 int programs_linking();

@@ -4,6 +4,7 @@
 
 #include "methods/kit/method/registry.hpp"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -53,15 +54,28 @@ private:
            (table_ ? "#define SUN_F_TABLE\n" : "");
   }
 
-  void link_ahead(const kit::SceneFrame& frame) override { gpu::link_compute_ahead(program, defines(frame)); }
+  // Warmed on the worker beside the frame's passes, then run there (GpuMethod::link_ahead).
+  void link_ahead(const kit::SceneFrame& frame, const gpu::Texture& target) override {
+    gpu::link_compute_ahead(program, defines(frame), frame.warm_pixels(inputs(target)));
+  }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     gpu::ScopedPass pass(timer, "airlight");
-    glUseProgram(gpu::cached_compute_program(program, defines(frame)).id());
-    if (table_) glBindTextureUnit(sun_table_unit, table_texture_.id());
-    glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    frame.dispatch_pixels();
+    const gpu::Program& p = gpu::cached_compute_program(program, defines(frame));
+    frame.run_on_worker([&] {
+      inputs(target)();
+      glUseProgram(p.id());
+      frame.dispatch_pixels();
+    });
     closed_forms_ = static_cast<double>(frame.width()) * frame.height() * frame.light_count();
+  }
+
+  // Binds the table and the target, by their names (SceneFrame::warm_pixels).
+  std::function<void()> inputs(const gpu::Texture& target) const {
+    return [table = table_ ? table_texture_.id() : 0, target = target.id()] {
+      if (table) glBindTextureUnit(sun_table_unit, table);
+      glBindImageTexture(0, target, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    };
   }
 
   bool uses_shadow_maps() const override { return false; }  // Γ is unoccluded

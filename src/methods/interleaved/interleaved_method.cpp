@@ -26,7 +26,9 @@ private:
   static bool guarded(const Settings& s) { return s.real("guard") > 0.0 && s.integer("block") > 1; }
 
   void prepare_airlight(const Scene&) override { march_.prepare(); }
-  void link_ahead(const kit::SceneFrame& frame) override { march_.link_ahead(frame); }
+  void link_ahead(const kit::SceneFrame& frame, const gpu::Texture& target) override {
+    march_.link_ahead(frame, target);
+  }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     {

@@ -87,12 +87,13 @@ INSTANTIATE_TEST_SUITE_P(Scenes, LightVolumeScenes, ::testing::Values("biri_sphe
 // worker (GpuMethod::link_ahead), each of them then used: the mesh's for a
 // spot and for a directional map (grid vertices, extra vertices, grid and
 // extra triangles, eye count) and for a cube (no extra vertices), the
-// crossings' draw and the lit intervals' resolve.
+// crossings' draw and the lit intervals' resolve, which is also warmed there.
 TEST(LightVolume, FirstFrameLinksAheadTheMeshOfEachKindOfLight) {
   gpu::clear_program_cache();
-  const int ahead = gpu::linked_ahead_count();
+  const int ahead = gpu::linked_ahead_count(), warmed = gpu::warmed_count();
   kit::test::render(find_method("light_volume"), builtin_scene("three_lights"), {}, 32, 24);
   EXPECT_EQ(gpu::linked_ahead_count(), ahead + 16);
+  EXPECT_EQ(gpu::warmed_count(), warmed + 1) << "the resolve was not warmed on the worker";
   EXPECT_EQ(gpu::programs_linking(), 0) << "a program linked ahead was not the one the frame used";
 }
 

@@ -15,7 +15,9 @@ public:
 
 private:
   void prepare_airlight(const Scene&) override { march_.prepare(); }
-  void link_ahead(const kit::SceneFrame& frame) override { march_.link_ahead(frame); }
+  void link_ahead(const kit::SceneFrame& frame, const gpu::Texture& target) override {
+    march_.link_ahead(frame, target);
+  }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     gpu::ScopedPass pass(timer, "airlight");

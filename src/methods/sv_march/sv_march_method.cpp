@@ -48,10 +48,12 @@ private:
     march_.prepare();
   }
 
-  void link_ahead(const kit::SceneFrame& frame) override {
-    shell_.link_ahead(frame);  // built first
-    gpu::link_ahead({{GL_VERTEX_SHADER, bounds_vertex}, {GL_FRAGMENT_SHADER, bounds_fragment}}, bounds_defines(frame));
-    march_.link_ahead(frame);
+  // The march alone: its link and warm-up take the worker longer than the
+  // frame's other passes take this thread, the shell's and the bounds draw's
+  // links included (docs/decisions.md "The first frame (issue 28)").
+  void link_ahead(const kit::SceneFrame& frame, const gpu::Texture& target) override {
+    size_bounds(frame);
+    march_.link_ahead(frame, target, [bounds = bounds_.id()] { bind_bounds(bounds); });
   }
   void build_frame(const kit::SceneFrame& frame, gpu::PassTimer& timer) override { shell_.build(frame, timer); }
 
@@ -61,21 +63,30 @@ private:
       draw_bounds(frame);
     }
     gpu::ScopedPass pass(timer, "airlight");
-    glBindImageTexture(1, bounds_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shell_eye_binding, shell_.eye_count_buffer().id());
-    march_.run(frame, target);
+    march_.run(frame, target, [&] {  // what sv_march.comp.glsl reads besides the march's
+      bind_bounds(bounds_.id());
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shell_eye_binding, shell_.eye_count_buffer().id());
+    });
+  }
+
+  // The warm-up binds the bounds alone: the shells' eye counts, a buffer the
+  // build may grow meanwhile, are no part of what llvmpipe compiles for.
+  static void bind_bounds(GLuint bounds) { glBindImageTexture(1, bounds, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI); }
+
+  // Two layers per light at the G-buffer's size.
+  void size_bounds(const kit::SceneFrame& frame) {
+    const int layers = std::max(2 * frame.light_count(), 1);  // a texture has a layer; no light reads it
+    if (frame.gbuffer_width() == width_ && frame.gbuffer_height() == height_ && layers == layers_) return;
+    width_ = frame.gbuffer_width();
+    height_ = frame.gbuffer_height();
+    layers_ = layers;
+    bounds_ = gpu::make_texture(GL_TEXTURE_2D_ARRAY, GL_R32UI, width_, height_, layers_);
   }
 
   // Per pixel and light, layer 2i: the nearest crossing with its shell (+∞ if
   // none), 2i + 1: the farthest (0 if none).
   void draw_bounds(const kit::SceneFrame& frame) {
-    const int layers = std::max(2 * frame.light_count(), 1);  // a texture has a layer; no light reads it
-    if (frame.gbuffer_width() != width_ || frame.gbuffer_height() != height_ || layers != layers_) {
-      width_ = frame.gbuffer_width();
-      height_ = frame.gbuffer_height();
-      layers_ = layers;
-      bounds_ = gpu::make_texture(GL_TEXTURE_2D_ARRAY, GL_R32UI, width_, height_, layers_);
-    }
+    size_bounds(frame);
     const GLuint infinity = 0x7f800000u, zero = 0u;
     for (int layer = 0; layer < layers_; ++layer)
       glClearTexSubImage(bounds_.id(), 0, 0, 0, layer, frame.width(), frame.height(), 1, GL_RED_INTEGER, GL_UNSIGNED_INT,

@@ -56,7 +56,10 @@ public:
   virtual ~CrossingPass() = default;
   virtual void prepare() = 0;  // needs a current context
   // Starts linking what run() will use for this frame (GpuMethod::link_ahead).
-  virtual void link_ahead(const SceneFrame& frame) const { (void)frame; }
+  virtual void link_ahead(const SceneFrame& frame, const gpu::Texture& target) {
+    (void)frame;
+    (void)target;
+  }
   // L_air into `target` (RGBA32F at the frame's size); the frame must be bound.
   virtual void run(const SceneFrame& frame, const CrossingGeometry& geometry, const gpu::Texture& target,
                    gpu::PassTimer& timer) = 0;

@@ -19,9 +19,9 @@ public:
 
 private:
   void prepare_airlight(const Scene& scene) override;
-  void link_ahead(const SceneFrame& frame) override {
+  void link_ahead(const SceneFrame& frame, const Texture& target) override {
     geometry_->link_ahead(frame);  // built first
-    pass_->link_ahead(frame);
+    pass_->link_ahead(frame, target);
   }
   void build_frame(const SceneFrame& frame, PassTimer& timer) override;
   void render_airlight(const SceneFrame& frame, const Texture& target, PassTimer& timer) override;

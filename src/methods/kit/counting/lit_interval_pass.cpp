@@ -69,11 +69,40 @@ std::string LitIntervalPass::crossings_defines(const SceneFrame& frame) const {
 }
 
 // The crossings' draw and the resolve, which every frame uses (the cull only
-// when there are triangles, known after the frame's build).
-void LitIntervalPass::link_ahead(const SceneFrame& frame) const {
+// when there are triangles, known after the frame's build); the resolve warmed
+// on the worker, with this frame's lists and target, while the frame's geometry
+// is built and drawn.
+void LitIntervalPass::link_ahead(const SceneFrame& frame, const gpu::Texture& target) {
   gpu::link_ahead({{GL_VERTEX_SHADER, crossings_vertex}, {GL_FRAGMENT_SHADER, crossings_fragment}},
                   crossings_defines(frame));
-  gpu::link_compute_ahead(resolve_program, resolve_defines(frame));
+  size_for(frame);
+  gpu::link_compute_ahead(resolve_program, resolve_defines(frame),
+                          frame.warm_pixels([images = resolve_images(target)] { images.bind(); }));
+}
+
+// The lists' heads (and progress) at the G-buffer's size, and the pool.
+void LitIntervalPass::size_for(const SceneFrame& frame) {
+  if (frame.gbuffer_width() != width_ || frame.gbuffer_height() != height_) {
+    width_ = frame.gbuffer_width();
+    height_ = frame.gbuffer_height();
+    heads_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
+    if (loop_limit_) progress_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
+  }
+  if (nodes_.id() == 0)
+    allocate_pool(std::max<size_t>(static_cast<size_t>(double(width_) * height_ * capacity_per_pixel_), 1));
+}
+
+// The images the resolve reads and writes: the target, the lists' heads (the
+// first pass sorts them) and, in passes, each pixel's progress.
+LitIntervalPass::ResolveImages LitIntervalPass::resolve_images(const gpu::Texture& target) const {
+  return {target.id(), heads_.id(), loop_limit_ ? progress_.id() : 0};
+}
+
+void LitIntervalPass::ResolveImages::bind() const {
+  const GLenum access = progress ? GL_READ_WRITE : GL_WRITE_ONLY;
+  glBindImageTexture(0, target, 0, GL_FALSE, 0, access, GL_RGBA32F);
+  glBindImageTexture(1, heads, 0, GL_FALSE, 0, progress ? GL_READ_WRITE : GL_READ_ONLY, GL_R32UI);
+  if (progress) glBindImageTexture(2, progress, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
 
 void LitIntervalPass::allocate_pool(size_t nodes) {
@@ -91,20 +120,14 @@ void LitIntervalPass::run(const SceneFrame& frame, const CrossingGeometry& geome
     list_crossings(frame, triangles.on_gpu ? *triangles.on_gpu : triangles_.buffer(), triangles.size());
   }
   gpu::ScopedPass pass(timer, "airlight");
-  resolve(frame, eye, target);
+  const gpu::Program& program = gpu::cached_compute_program(resolve_program, resolve_defines(frame));
+  frame.run_on_worker([&] { resolve(frame, program, eye, target); });  // where link_ahead warmed it
 }
 
 // Every pixel's list of crossings, the pool grown and the triangles drawn
 // again until every crossing fits.
 void LitIntervalPass::list_crossings(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count) {
-  if (frame.gbuffer_width() != width_ || frame.gbuffer_height() != height_) {
-    width_ = frame.gbuffer_width();
-    height_ = frame.gbuffer_height();
-    heads_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
-    if (loop_limit_) progress_ = gpu::make_texture(GL_TEXTURE_2D, GL_R32UI, width_, height_);
-  }
-  if (nodes_.id() == 0)
-    allocate_pool(std::max<size_t>(static_cast<size_t>(double(width_) * height_ * capacity_per_pixel_), 1));
+  size_for(frame);
   redraws_ = 0;
   draw(frame, triangles, triangle_count);
   while (crossings_ > node_capacity_) {  // some crossings did not fit: a larger pool, drawn again
@@ -130,9 +153,8 @@ void LitIntervalPass::draw(const SceneFrame& frame, const gpu::Buffer& triangles
   if (triangle_count > 0) glGetNamedBufferSubData(node_count_.id(), 0, sizeof(GLuint), &crossings_);
 }
 
-void LitIntervalPass::resolve(const SceneFrame& frame, const EyeCounts& eye, const gpu::Texture& target) {
-  const gpu::Program& program =
-      gpu::cached_compute_program(resolve_program, resolve_defines(frame));
+void LitIntervalPass::resolve(const SceneFrame& frame, const gpu::Program& program, const EyeCounts& eye,
+                              const gpu::Texture& target) {
   glUseProgram(program.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nodes_binding, nodes_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, node_count_binding, node_count_.id());
@@ -149,26 +171,21 @@ void LitIntervalPass::resolve(const SceneFrame& frame, const EyeCounts& eye, con
     gpu::set_uniform(program, "eye_planes", planes);
     gpu::set_uniform(program, "eye_plane_weights", weights);
   }
+  resolve_images(target).bind();
   loop_limited_ = 0;
   passes_ = 1;
   if (!loop_limit_) {
-    glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     frame.dispatch_pixels();
     return;
   }
-  resolve_in_passes(frame, program, target);
+  resolve_in_passes(frame, program);
 }
 
 // llvmpipe: passes while some pixel is unfinished (lit_intervals.comp.glsl,
 // LOOP_LIMIT); each one sums at least one more interval of every such pixel or
 // lowers its samples, so they end; max_passes only bounds a runaway.
-void LitIntervalPass::resolve_in_passes(const SceneFrame& frame, const gpu::Program& program,
-                                        const gpu::Texture& target) {
+void LitIntervalPass::resolve_in_passes(const SceneFrame& frame, const gpu::Program& program) {
   constexpr int max_passes = 4096;
-  glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glBindImageTexture(1, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  glBindImageTexture(2, progress_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   const GLuint zeros[2] = {0, 0};  // loop_limited, unfinished
   glNamedBufferSubData(node_count_.id(), 2 * sizeof(GLuint), sizeof(zeros), zeros);
   for (passes_ = 1;; ++passes_) {

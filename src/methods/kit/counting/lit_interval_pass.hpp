@@ -42,7 +42,7 @@ public:
 
   void prepare() override;
   // The crossings' draw and the resolve (the cull waits: it runs only when there are triangles).
-  void link_ahead(const SceneFrame& frame) const override;
+  void link_ahead(const SceneFrame& frame, const gpu::Texture& target) override;
 
   // The crossings of the geometry's triangles (uploaded first if on the CPU)
   // with the frame's pixel rays, then Σ Γ over each light's lit intervals
@@ -59,8 +59,15 @@ public:
 private:
   void list_crossings(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
   void draw(const SceneFrame& frame, const gpu::Buffer& triangles, size_t triangle_count);
-  void resolve(const SceneFrame& frame, const EyeCounts& eye, const gpu::Texture& target);
-  void resolve_in_passes(const SceneFrame& frame, const gpu::Program& program, const gpu::Texture& target);
+  // The resolve's images by their names, for the worker's thread (SceneFrame::warm_pixels).
+  struct ResolveImages {
+    GLuint target, heads, progress;  // progress: 0 unless it runs in passes
+    void bind() const;
+  };
+  ResolveImages resolve_images(const gpu::Texture& target) const;
+  void size_for(const SceneFrame& frame);
+  void resolve(const SceneFrame& frame, const gpu::Program& program, const EyeCounts& eye, const gpu::Texture& target);
+  void resolve_in_passes(const SceneFrame& frame, const gpu::Program& program);
   void allocate_pool(size_t nodes);
   std::string defines() const;
   std::string resolve_defines(const SceneFrame& frame) const;

@@ -23,22 +23,49 @@ std::string binding_defines() {
   return text;
 }
 
-void SceneFrame::bind() const {
-  glBindBufferBase(GL_UNIFORM_BUFFER, binding::frame_block, frame_block_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::lights, lights_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::volumes, volumes_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::lobes, lobes_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::face_normals, face_normals_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::objects, objects_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::pixel_list, grid_list_ ? grid_list_->id() : 0);
-  glBindTextureUnit(binding::distance, distance().id());
-  glBindTextureUnit(binding::normal, normal_.id());
-  glBindTextureUnit(binding::geometric_normal, geometric_normal_.id());
-  glBindTextureUnit(binding::albedo, albedo_.id());
-  glBindTextureUnit(binding::gobos, gobos_.id());
-  glBindTextureUnit(binding::shadow_maps, shadow_maps_.id());
-  glBindTextureUnit(binding::shadow_cubes, shadow_cubes_.id());
+SceneFrame::Bindings SceneFrame::bindings() const {
+  return {frame_block_.id(),     lights_.id(), volumes_.id(), lobes_.id(),  face_normals_.id(),
+          objects_.id(),         grid_list_ ? grid_list_->id() : 0,         distance().id(),
+          normal_.id(),          geometric_normal_.id(),                    albedo_.id(),
+          gobos_.id(),           shadow_maps_.id(),                         shadow_cubes_.id()};
+}
+
+void SceneFrame::Bindings::bind() const {
+  glBindBufferBase(GL_UNIFORM_BUFFER, binding::frame_block, frame_block);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::lights, lights);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::volumes, volumes);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::lobes, lobes);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::face_normals, face_normals);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::objects, objects);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::pixel_list, pixel_list);
+  glBindTextureUnit(binding::distance, distance);
+  glBindTextureUnit(binding::normal, normal);
+  glBindTextureUnit(binding::geometric_normal, geometric_normal);
+  glBindTextureUnit(binding::albedo, albedo);
+  glBindTextureUnit(binding::gobos, gobos);
+  glBindTextureUnit(binding::shadow_maps, shadow_maps);
+  glBindTextureUnit(binding::shadow_cubes, shadow_cubes);
   for (GLuint unit = 0; unit < binding::first_free_texture; ++unit) glBindSampler(unit, 0);
+}
+
+void SceneFrame::bind() const { bindings().bind(); }
+
+gpu::Warm SceneFrame::warm_pixels(std::function<void()> bind_pass) const {
+  return [frame = bindings(), empty = empty_block_.id(), bind_pass = std::move(bind_pass)](const gpu::Program& p) {
+    frame.bind();
+    bind_pass();
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::frame_block, empty);
+    glUseProgram(p.id());
+    glDispatchCompute(1, 1, 1);
+    glUseProgram(0);
+  };
+}
+
+void SceneFrame::run_on_worker(const std::function<void()>& pass) const {
+  gpu::run_in_worker_context([&] {
+    bind();
+    pass();
+  });
 }
 
 }  // namespace airlight::kit

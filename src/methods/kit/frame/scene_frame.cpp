@@ -31,6 +31,8 @@ void SceneFrame::prepare(const Scene& scene) {
   upload_meshes(scene);
   upload_gobos(scene);
   frame_block_ = make_buffer(sizeof(shader::FrameData), nullptr);
+  const shader::FrameData empty{};
+  empty_block_ = make_buffer(sizeof empty, &empty);
   gbuffer_fbo_ = make_framebuffer();
   shadow_fbo_ = make_framebuffer();
   nearest_ = gpu::make_nearest_sampler();

@@ -11,6 +11,7 @@
 // Pixels follow geometry::primary_ray (docs/design.md §5): GL's bottom-left origin, so
 // GL row y is image row H−1−y; read_image() flips back to top row first.
 #include "gpu/gl.hpp"
+#include "gpu/program.hpp"
 #include "gpu/timer.hpp"
 #include "methods/kit/frame/bindings.hpp"
 #include "methods/kit/frame/frame_data.hpp"
@@ -22,6 +23,7 @@
 #include <airlight/scene.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -68,6 +70,26 @@ public:
 
   // Binds the frame block, the scene SSBOs and the textures to binding::*.
   void bind() const;
+  // What bind() binds, as values that another thread may bind (the worker's,
+  // gpu::run_in_worker_context).
+  struct Bindings {
+    GLuint frame_block, lights, volumes, lobes, face_normals, objects, pixel_list;
+    GLuint distance, normal, geometric_normal, albedo, gobos, shadow_maps, shadow_cubes;
+    void bind() const;
+  };
+  Bindings bindings() const;
+  // The warm-up of a per-pixel program (gpu::Warm): in the worker's context,
+  // this frame's bindings and `bind_pass`'s, then one workgroup over a frame
+  // block of zeros, a grid of no pixels where every invocation returns at once
+  // (FRAME_PIXEL_OR_RETURN). llvmpipe keys the code it generates by the bound
+  // textures' and images' formats and shapes, so `bind_pass` binds the
+  // textures and images the pass's run binds — by names it holds, as it runs
+  // on the worker's thread, maybe after the frame's build has begun: not a
+  // buffer the build may replace, which nothing compiled depends on.
+  gpu::Warm warm_pixels(std::function<void()> bind_pass) const;
+  // Runs `pass` in the worker's context with this frame bound there
+  // (gpu::run_in_worker_context), where warm_pixels warmed its program.
+  void run_on_worker(const std::function<void()>& pass) const;
 
   // What every program that includes scene.glsl is compiled with, for this
   // frame: the binding points and the scene's structure as constants — light
@@ -174,6 +196,7 @@ private:
   VertexArray vertex_array_;
   Buffer vertices_, indices_, face_normals_, objects_;
   Buffer frame_block_, lights_, volumes_, lobes_;
+  Buffer empty_block_;  // a frame block of zeros (warm_pixels)
   Texture gobos_;
   Texture distance_, normal_, geometric_normal_, albedo_, depth_, surface_;
   Framebuffer gbuffer_fbo_, shadow_fbo_;

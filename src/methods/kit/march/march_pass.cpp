@@ -61,32 +61,56 @@ std::string MarchPass::defines(const kit::SceneFrame& frame) const {
   return d;
 }
 
-void MarchPass::link_ahead(const kit::SceneFrame& frame) const { gpu::link_compute_ahead(program_, defines(frame)); }
+// The march warmed on the worker with this frame's textures, while the frame's
+// other passes run.
+void MarchPass::link_ahead(const kit::SceneFrame& frame, const gpu::Texture& target, std::function<void()> bind_own) {
+  size_for(frame);
+  gpu::link_compute_ahead(program_, defines(frame),
+                          frame.warm_pixels([images = images(target), bind_own = std::move(bind_own)] {
+                            images.bind();
+                            if (bind_own) bind_own();
+                          }));
+}
 
-void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target) {
+void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target, const std::function<void()>& bind_own) {
   const int stride = settings_.block * settings_.block;
   const int own_samples = (settings_.steps + stride - 1) / stride;  // of pixel q = 0, the most
+  size_for(frame);
   const gpu::Program& program = gpu::cached_compute_program(program_, defines(frame));
-  glUseProgram(program.id());
-  gpu::set_uniform(program, "steps", settings_.steps);
-  gpu::set_uniform(program, "block", settings_.block);
-  glBindTextureUnit(jitter_unit, noise_.id());
-  glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  if (frame.gbuffer_width() != width_ || frame.gbuffer_height() != height_) {
-    width_ = frame.gbuffer_width();
-    height_ = frame.gbuffer_height();
-    if (settings_.normalized) guide_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
-    if (settings_.guard) spread_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
-  }
-  if (settings_.normalized) glBindImageTexture(1, guide_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  if (settings_.guard) glBindImageTexture(2, spread_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  const int per_dispatch = samples_per_dispatch(settings_.block);
-  for (int first = 0; first < own_samples; first += per_dispatch) {
-    gpu::set_uniform(program, "first_sample", first);
-    gpu::set_uniform(program, "sample_count", std::min(per_dispatch, own_samples - first));
-    frame.dispatch_pixels();
-  }
+  frame.run_on_worker([&] {  // where link_ahead warmed it
+    images(target).bind();
+    if (bind_own) bind_own();
+    glUseProgram(program.id());
+    gpu::set_uniform(program, "steps", settings_.steps);
+    gpu::set_uniform(program, "block", settings_.block);
+    const int per_dispatch = samples_per_dispatch(settings_.block);
+    for (int first = 0; first < own_samples; first += per_dispatch) {
+      gpu::set_uniform(program, "first_sample", first);
+      gpu::set_uniform(program, "sample_count", std::min(per_dispatch, own_samples - first));
+      frame.dispatch_pixels();
+    }
+  });
   light_samples_ = static_cast<double>(frame.width()) * frame.height() * settings_.steps / stride * frame.light_count();
+}
+
+// The light guide and the spread at the G-buffer's size, as the settings ask.
+void MarchPass::size_for(const kit::SceneFrame& frame) {
+  if (frame.gbuffer_width() == width_ && frame.gbuffer_height() == height_) return;
+  width_ = frame.gbuffer_width();
+  height_ = frame.gbuffer_height();
+  if (settings_.normalized) guide_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
+  if (settings_.guard) spread_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, width_, height_);
+}
+
+MarchPass::Images MarchPass::images(const gpu::Texture& target) const {
+  return {target.id(), noise_.id(), guide_.id(), spread_.id()};
+}
+
+void MarchPass::Images::bind() const {
+  glBindTextureUnit(jitter_unit, noise);
+  glBindImageTexture(0, target, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  if (guide) glBindImageTexture(1, guide, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  if (spread) glBindImageTexture(2, spread, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
 }
 
 }  // namespace airlight::kit

@@ -6,6 +6,7 @@
 #include "methods/kit/frame/scene_frame.hpp"
 
 #include <airlight/settings.hpp>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,9 +47,14 @@ public:
   // frame's size; w = 1, or when normalized whether a light reaches the ray);
   // the frame must be bound (SceneFrame::bind), and what a method's own
   // program reads besides.
-  void run(const kit::SceneFrame& frame, const gpu::Texture& target);
-  // Starts linking run()'s program for this frame's defines (GpuMethod::link_ahead).
-  void link_ahead(const kit::SceneFrame& frame) const;
+  // It runs in the worker's context (gpu::run_in_worker_context), where
+  // link_ahead warmed its program: `bind_own`, run there first, binds what a
+  // method's own program reads besides.
+  void run(const kit::SceneFrame& frame, const gpu::Texture& target, const std::function<void()>& bind_own = {});
+  // Starts linking run()'s program for this frame's defines and warming it
+  // with `target` (GpuMethod::link_ahead); `bind_own` binds by values it
+  // holds, as SceneFrame::warm_pixels says.
+  void link_ahead(const kit::SceneFrame& frame, const gpu::Texture& target, std::function<void()> bind_own = {});
 
   // With `normalized`: each pixel's light guide (rgb) and volume key (w,
   // march.glsl) from the last run (RGBA32F).
@@ -62,6 +68,12 @@ public:
   double light_samples() const { return light_samples_; }
 
 private:
+  struct Images {  // run()'s textures by their names, for the worker's thread
+    GLuint target, noise, guide, spread;  // guide, spread: 0 unless normalized, guarded
+    void bind() const;
+  };
+  Images images(const gpu::Texture& target) const;
+  void size_for(const kit::SceneFrame& frame);
   std::string defines(const kit::SceneFrame& frame) const;
 
   MarchSettings settings_;

@@ -87,13 +87,13 @@ void GpuMethod::draw(const FrameInputs& inputs, const EngineFrame* engine) {
   const bool surface = inputs.surface && (!engine || engine->target.surface);
   const SceneFrame::Needs needs{uses_shadow_maps() || surface, surface};
   frame_.set_inputs(inputs, frame_settings_, engine, needs);
-  link_ahead(frame_);
-  frame_.render_passes(engine, needs, timer);
   if (inputs.width != width_ || inputs.height != height_) {
     airlight_ = gpu::make_texture(GL_TEXTURE_2D, GL_RGBA32F, inputs.width, inputs.height);
     width_ = inputs.width;
     height_ = inputs.height;
   }
+  link_ahead(frame_, airlight_);
+  frame_.render_passes(engine, needs, timer);
   frame_.bind();
   build_frame(frame_, timer);
   if (resolution_.reduces())

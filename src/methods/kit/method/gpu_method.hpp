@@ -53,8 +53,14 @@ protected:
   // starts linking the programs the method's last passes will use
   // (gpu::link_ahead), so that a new scene structure's first frame links them
   // beside the frame's other passes — after the CPU work that decides which
-  // they are, where there is some (the planes' plan: PlanePass::plan).
-  virtual void link_ahead(const SceneFrame& frame) { (void)frame; }
+  // they are, where there is some (the planes' plan: PlanePass::plan) — and
+  // a last compute pass warmed there as well (gpu::Warm, SceneFrame::
+  // warm_pixels), then run in the worker's context. `target` is the one
+  // render_airlight will be given at full resolution, already of this size.
+  virtual void link_ahead(const SceneFrame& frame, const Texture& target) {
+    (void)frame;
+    (void)target;
+  }
   // Once per frame, before render_airlight: what depends on the frame but not
   // on the pixel grid (a shadow volume, a light volume mesh), which a frame at
   // reduced resolution renders on two grids.

@@ -12,7 +12,7 @@ public:
 
 private:
   void prepare_airlight(const Scene& scene) override { pass_.prepare(scene); }
-  void link_ahead(const SceneFrame& frame) override { pass_.plan(frame); }
+  void link_ahead(const SceneFrame& frame, const Texture&) override { pass_.plan(frame); }
 
   void render_airlight(const SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     gpu::ScopedPass pass(timer, "airlight");
