@@ -267,6 +267,20 @@ TEST(Gpu, WarmRunsOnTheWorkerWithTheLinkedProgram) {
   context.check("warm");
 }
 
+// A warm-up that raises a GL error (textures deleted meanwhile) costs nothing
+// but the warm-up: the program links and computes as ever, and no later call
+// throws its error.
+TEST(Gpu, AFailedWarmUpLeavesAWorkingProgram) {
+  Context& context = Context::headless();
+  const std::string defines = "#define SCALE 0.25\n";
+  link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines,
+                     [](const Program&) { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1u << 20, 0); });
+  const Program& linked = cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines);
+  EXPECT_EQ(fill(linked)[4], 4.0f);  // 0.25·4²
+  run_in_worker_context([] {});
+  context.check("failed warm-up");
+}
+
 // Work in the worker's context sees what this context wrote before it, and
 // this context sees what the work wrote; without an error in between.
 TEST(Gpu, WorkInTheWorkerContextIsOrderedWithThisContexts) {

@@ -250,7 +250,11 @@ public:
           Program program(glCreateProgram());
           link_into(program, stages, defines);
           if (warm) warm(program);
-          throw_gl_errors("warming " + stages.front().name);
+          // A warm-up only saves the first dispatch its code: one that failed
+          // (its textures deleted meanwhile, by a frame that threw) leaves it
+          // there, so its GL errors are dropped, not thrown into a later frame.
+          while (glGetError() != GL_NO_ERROR) {
+          }
           glFinish();  // the link is complete before another context uses the program
           return Linked{std::move(program), static_cast<bool>(warm)};
         });
