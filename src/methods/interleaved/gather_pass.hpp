@@ -5,6 +5,8 @@
 #include "gpu/program.hpp"
 #include "methods/kit/frame/scene_frame.hpp"
 
+#include <string>
+
 namespace airlight::methods {
 
 struct GatherSettings {
@@ -25,13 +27,22 @@ public:
   // (SceneFrame::bind).
   void run(const kit::SceneFrame& frame, const gpu::Texture& image, const gpu::Texture& guide,
            const gpu::Texture& spread);
+  // Compiles run()'s two programs here, where they run, while the march runs
+  // in the worker's context: each dispatched once over no pixels with the
+  // run's textures (SceneFrame::warm_pixels), then the frame bound again.
+  void warm(const kit::SceneFrame& frame, const gpu::Texture& image, const gpu::Texture& guide,
+            const gpu::Texture& spread);
 
 private:
+  void size_for(const kit::SceneFrame& frame);
+  std::string defines(const kit::SceneFrame& frame, bool vertical) const;
+  void bind(const gpu::Program& program, const gpu::Texture& from, const gpu::Texture& to) const;
   void pass(const kit::SceneFrame& frame, const gpu::Texture& from, const gpu::Texture& to, bool vertical);
 
   GatherSettings settings_;
   gpu::Texture rows_;  // the horizontal pass's output
   int width_ = 0, height_ = 0;
+  std::string warmed_;  // the frame defines warm() compiled for
 };
 
 }  // namespace airlight::methods

@@ -31,6 +31,7 @@ private:
   }
 
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
+    gather_.warm(frame, target, march_.guide(), march_.spread());  // here, before the march's wait for the worker
     {
       gpu::ScopedPass pass(timer, "march");
       march_.run(frame, target);

@@ -78,7 +78,8 @@ public:
     void bind() const;
   };
   Bindings bindings() const;
-  // The warm-up of a per-pixel program (gpu::Warm): in the worker's context,
+  // The warm-up of a per-pixel program (gpu::Warm, or called in this context
+  // for a pass that runs here): in the worker's context,
   // this frame's bindings and `bind_pass`'s, then one workgroup over a frame
   // block of zeros, a grid of no pixels where every invocation returns at once
   // (FRAME_PIXEL_OR_RETURN). llvmpipe keys the code it generates by the bound
