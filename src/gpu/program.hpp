@@ -56,7 +56,8 @@ void link_compute_ahead(const std::string& name, const std::string& defines = ""
 // Runs `work` on the worker's thread in the worker's context, after what it
 // was asked before, and returns when it is done (rethrowing what it threw, and
 // a GL error it raised as Failure). Fences order it after this context's
-// commands so far and before the ones after. Without a worker, runs it here.
+// commands so far and before the ones after. Without a worker, or called from
+// the worker's own thread, runs it here.
 void run_in_worker_context(const std::function<void()>& work);
 // Programs the cache has compiled so far in this process.
 int cached_program_count();

@@ -99,8 +99,8 @@ LitIntervalPass::ResolveImages LitIntervalPass::resolve_images(const gpu::Textur
 }
 
 void LitIntervalPass::ResolveImages::bind() const {
-  const GLenum access = progress ? GL_READ_WRITE : GL_WRITE_ONLY;
-  glBindImageTexture(0, target, 0, GL_FALSE, 0, access, GL_RGBA32F);
+  // In passes the first sorts the lists and later ones add to the target.
+  glBindImageTexture(0, target, 0, GL_FALSE, 0, progress ? GL_READ_WRITE : GL_WRITE_ONLY, GL_RGBA32F);
   glBindImageTexture(1, heads, 0, GL_FALSE, 0, progress ? GL_READ_WRITE : GL_READ_ONLY, GL_R32UI);
   if (progress) glBindImageTexture(2, progress, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
