@@ -1,6 +1,7 @@
 #include "geometry/beam_tree.hpp"
 
 #include <airlight/error.hpp>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -32,7 +33,7 @@ namespace airlight::geometry {
 struct BeamTree::Vertex {
   glm::dvec3 x;
   bool cut = false;
-  double reach = 0.0;  // |x − L| for a point light, which beam_tolerance scales by: once per corner, not per plane
+  double tolerance = 0.0;  // beam_tolerance(x): once per corner, not per plane
 };
 
 // A convex piece of the input polygon surfaces_[surface].
@@ -50,6 +51,12 @@ namespace {
 // 25034 with 32; its soups alike but less (30737, 31112, 35087).
 constexpr size_t kSortLeaf = 512;
 constexpr size_t kCandidates = 8;  // planes tried for the fewest cuts
+// Sets larger than this are divided into sectors, up to kSectorLevels planes deep (8 sectors):
+// enough to keep two cores busy to the end; each sector plane is judged on about
+// kSectorSample of the set's pieces.
+constexpr size_t kSectorLeaf = 8192;
+constexpr int kSectorLevels = 3;
+constexpr size_t kSectorSample = 4096;
 
 bool finite(const glm::dvec3& x) { return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z); }
 
@@ -122,12 +129,98 @@ BeamTree::BeamTree(const LightOrigin& light, std::span<const BeamPolygon> polygo
       epsilon_(epsilon) {
   if (!(epsilon > 0.0 && std::isfinite(epsilon)))
     throw Failure("beam tree: epsilon must be positive and finite, got " + std::to_string(epsilon));
-  std::vector<Piece> order = sort_front_to_back(prepare(polygons));
-  stats_.sorted_pieces = static_cast<int>(order.size());
-  add_node();  // the root: one open leaf, all of space (§4.1)
-  std::vector<double> distance;
-  for (Piece& piece : order) insert(std::move(piece), distance);
+  add_node(nodes_);  // the root: one open leaf, all of space (§4.1)
+  std::vector<Sector> parts;
+  sectors(prepare(polygons), 0, kSectorLevels, parts);
+  std::vector<Subtree> trees(parts.size());
+  tbb::parallel_for(size_t{0}, parts.size(), [&](size_t k) { trees[k] = grow(std::move(parts[k].pieces)); });
+  for (size_t k = 0; k < parts.size(); ++k) graft(std::move(trees[k]), parts[k].leaf);
   stats_.depth = depth();
+  stats_.sectors = static_cast<int>(parts.size());
+}
+
+// A large set is first divided by planes through L (along D) into sectors: each plane is a
+// split node at the top of the tree, and as no piece on one side reaches a leaf on the other,
+// each sector's tree grows from its own pieces alone, on its own thread, shallower than one
+// tree over all. Their leaves are the same pieces' beams as in a tree over all, cut by the
+// sector planes too.
+void BeamTree::sectors(std::vector<Piece> pieces, int leaf, int levels, std::vector<Sector>& out) {
+  const std::optional<Plane> plane = levels > 0 && pieces.size() > kSectorLeaf ? sector_plane(pieces) : std::nullopt;
+  if (!plane) return out.push_back({std::move(pieces), leaf});
+  const int front = add_node(nodes_), back = add_node(nodes_);
+  nodes_[leaf] = {Kind::split, *plane, front, back};
+  std::vector<Piece> in_front, behind;
+  Scratch scratch;
+  for (Piece& piece : pieces) {
+    Piece back{{}, piece.surface};
+    const Where where = step(piece, *plane, scratch, back);
+    if (where == Where::both) behind.push_back(std::move(back));
+    (where == Where::back ? behind : in_front).push_back(std::move(piece));
+  }
+  pieces = {};
+  sectors(std::move(in_front), front, levels - 1, out);
+  sectors(std::move(behind), back, levels - 1, out);
+}
+
+// Of the planes through L (a directional light: along D, through the median of the pieces)
+// with a few fixed normals, the one that leaves the fewest pieces on its fuller side (a piece
+// it cuts counts on both); none if that is over 3/4 of them. Planes fitted to the pieces'
+// directions from L divided toth_hall's sectors evenly but cut a fifth more pieces, which cost
+// more in the pyramids than the even division saved (docs/decisions.md).
+std::optional<BeamTree::Plane> BeamTree::sector_plane(const std::vector<Piece>& set) const {
+  static constexpr double kNormals[13][3] = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},  {1, 1, 0},  {1, -1, 0},
+                                             {1, 0, 1},  {1, 0, -1}, {0, 1, 1},  {0, 1, -1}, {1, 1, 1},
+                                             {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
+  const size_t stride = std::max<size_t>(1, set.size() / kSectorSample);
+  std::optional<Plane> best;
+  size_t fullest = std::numeric_limits<size_t>::max(), judged = 0;
+  std::vector<double> distance, at;
+  for (const auto& a : kNormals) {
+    glm::dvec3 n = glm::normalize(glm::dvec3(a[0], a[1], a[2]));
+    if (directional_) n -= glm::dot(n, light_) * light_;
+    if (glm::length(n) < 0.5) continue;  // nearly along D
+    Plane plane{glm::normalize(n), -glm::dot(glm::normalize(n), light_)};
+    if (directional_) {
+      at.clear();
+      for (size_t k = 0; k < set.size(); k += stride) at.push_back(glm::dot(plane.n, set[k].loop.front().x));
+      std::nth_element(at.begin(), at.begin() + at.size() / 2, at.end());
+      plane.d = -at[at.size() / 2];
+    }
+    size_t front = 0, back = 0;
+    judged = 0;
+    for (size_t k = 0; k < set.size(); k += stride, ++judged) {
+      const Where where = sides(set[k].loop, plane, true, distance);
+      front += where != Where::back;
+      back += where == Where::back || where == Where::both;
+    }
+    if (std::max(front, back) < fullest) std::tie(best, fullest) = std::pair(plane, std::max(front, back));
+  }
+  return 4 * fullest <= 3 * judged ? best : std::nullopt;
+}
+
+// The sector's pieces in front-to-back order, inserted into a tree of their own.
+BeamTree::Subtree BeamTree::grow(std::vector<Piece> pieces) const {
+  Subtree tree;
+  std::vector<Piece> order = sort_front_to_back(std::move(pieces));
+  tree.sorted_pieces = static_cast<int>(order.size());
+  add_node(tree.nodes);
+  Scratch scratch;
+  for (Piece& piece : order) insert(std::move(piece), scratch, tree);
+  return tree;
+}
+
+// The subtree in place of the open leaf: its root there, its other nodes appended.
+void BeamTree::graft(Subtree tree, int leaf) {
+  const int offset = static_cast<int>(nodes_.size()) - 1;  // node k ≥ 1 goes to k + offset
+  for (size_t k = 0; k < tree.nodes.size(); ++k) {
+    Node node = tree.nodes[k];
+    if (node.kind == Kind::split) node.front += offset, node.back += offset;
+    if (k == 0) nodes_[leaf] = node;
+    else nodes_.push_back(node);
+  }
+  visible_.insert(visible_.end(), std::make_move_iterator(tree.visible.begin()), std::make_move_iterator(tree.visible.end()));
+  stats_.sorted_pieces += tree.sorted_pieces;
+  stats_.thin_pieces += tree.thin_pieces;
 }
 
 std::vector<BeamTree::Piece> BeamTree::prepare(std::span<const BeamPolygon> polygons) {
@@ -308,41 +401,47 @@ void BeamTree::separate(std::vector<Piece>& set, const Plane& plane, std::vector
 
 // Programs 3 and 4, without recursion: a piece reaching a solid leaf is in shadow; one
 // reaching an open leaf is seen from L.
-void BeamTree::insert(Piece piece, std::vector<double>& distance) {
-  std::vector<std::pair<int, Piece>> stack;
+void BeamTree::insert(Piece piece, Scratch& scratch, Subtree& tree) const {
+  std::vector<std::pair<int, Piece>>& stack = scratch.stack;
   stack.emplace_back(0, std::move(piece));
   while (!stack.empty()) {
     auto [index, part] = std::move(stack.back());
     stack.pop_back();
-    const Node node = nodes_[index];
-    if (node.kind == Kind::open) attach(index, part);
-    if (node.kind != Kind::split) continue;
-    const Where where = sides(part.loop, node.plane, true, distance);
-    if (where == Where::front || where == Where::back) mark_cuts(part.loop, distance);
-    switch (where) {
-      case Where::front:
-      case Where::on: stack.emplace_back(node.front, std::move(part)); break;  // Program 2's side
-      case Where::back: stack.emplace_back(node.back, std::move(part)); break;
-      case Where::both: {
-        Piece back{{}, part.surface};
-        clip(part.loop, distance, -1, true, back.loop);
-        Piece front{{}, part.surface};
-        clip(part.loop, distance, 1, true, front.loop);
-        stack.emplace_back(node.back, std::move(back));
-        stack.emplace_back(node.front, std::move(front));
+    for (;;) {  // down the front, the back part of each cut left on the stack
+      const Node& node = tree.nodes[index];
+      if (node.kind == Kind::solid) break;
+      if (node.kind == Kind::open) {  // after attach, `node` may be gone: it grows the nodes
+        attach(index, part, tree);
         break;
       }
+      Piece back{{}, part.surface};
+      const Where where = step(part, node.plane, scratch, back);
+      if (where == Where::both) stack.emplace_back(node.back, std::move(back));
+      index = where == Where::back ? node.back : node.front;
     }
   }
+}
+
+// One split node's step: whether the piece goes in front (Program 2's side where it lies in
+// the plane), behind or to both, its edges along the plane marked; a piece cut in two keeps
+// its front part and gives its back part to `back`.
+BeamTree::Where BeamTree::step(Piece& piece, const Plane& plane, Scratch& scratch, Piece& back) const {
+  const Where where = sides(piece.loop, plane, true, scratch.distance);
+  if (where == Where::front || where == Where::back) mark_cuts(piece.loop, scratch.distance);
+  if (where != Where::both) return where;
+  clip(piece.loop, scratch.distance, -1, true, back.loop);
+  clip(piece.loop, scratch.distance, 1, true, scratch.loop);
+  std::swap(piece.loop, scratch.loop);
+  return where;
 }
 
 // Program 4: the open leaf becomes the chain of the planes through L and the piece's edges,
 // each with an open leaf in front, ending in a solid leaf with the piece's plane. (Program 4
 // stores solidPlane on the last split node, not on the solid leaf that needs it.)
-void BeamTree::attach(int leaf, const Piece& piece) {
+void BeamTree::attach(int leaf, const Piece& piece, Subtree& tree) const {
   const Loop corners = outline(piece.loop);
   if (corners.size() < 3) {
-    ++stats_.thin_pieces;
+    ++tree.thin_pieces;
     return;
   }
   const Surface& surface = surfaces_[piece.surface];
@@ -350,12 +449,12 @@ void BeamTree::attach(int leaf, const Piece& piece) {
   for (size_t i = 0; i < corners.size(); ++i) {
     if (corners[i].cut) continue;
     const Plane plane = edge_plane(corners[i].x, corners[(i + 1) % corners.size()].x, surface.faces_light);
-    const int front = add_node(), back = add_node();
-    nodes_[node] = {Kind::split, plane, front, back};
+    const int front = add_node(tree.nodes), back = add_node(tree.nodes);
+    tree.nodes[node] = {Kind::split, plane, front, back};
     node = back;
   }
-  nodes_[node] = {Kind::solid, surface.plane, -1, -1};
-  BeamPolygon& seen = visible_.emplace_back();
+  tree.nodes[node] = {Kind::solid, surface.plane, -1, -1};
+  BeamPolygon& seen = tree.visible.emplace_back();
   seen.source = surface.source;
   for (const Vertex& v : piece.loop) seen.vertices.push_back(v.x);
 }
@@ -392,9 +491,9 @@ BeamTree::Plane BeamTree::edge_plane(const glm::dvec3& a, const glm::dvec3& b, b
   return {n, -glm::dot(n, directional_ ? a : light_)};
 }
 
-int BeamTree::add_node() {
-  nodes_.emplace_back();
-  return static_cast<int>(nodes_.size() - 1);
+int BeamTree::add_node(std::vector<Node>& nodes) {
+  nodes.emplace_back();
+  return static_cast<int>(nodes.size() - 1);
 }
 
 int BeamTree::depth() const {
@@ -420,7 +519,7 @@ BeamTree::Where BeamTree::sides(const Loop& loop, const Plane& plane, bool beam,
   bool front = false, back = false;
   for (size_t i = 0; i < loop.size(); ++i) {
     const double d = plane.distance(loop[i].x);
-    const double tolerance = beam ? beam_tolerance(loop[i]) : epsilon_;
+    const double tolerance = beam ? loop[i].tolerance : epsilon_;
     distance[i] = std::abs(d) <= tolerance ? 0.0 : d;
     front = front || distance[i] > 0.0;
     back = back || distance[i] < 0.0;
@@ -437,7 +536,7 @@ void BeamTree::clip(const Loop& in, const std::vector<double>& distance, int sid
     const size_t j = (i + 1) % in.size();
     const double di = side * distance[i], dj = side * distance[j];
     if (di >= 0.0)
-      out.push_back({in[i].x, di > 0.0 || dj > 0.0 ? in[i].cut : (dj == 0.0 && in[i].cut) || cut, in[i].reach});
+      out.push_back({in[i].x, di > 0.0 || dj > 0.0 ? in[i].cut : (dj == 0.0 && in[i].cut) || cut, in[i].tolerance});
     if (di * dj < 0.0)
       out.push_back(vertex(in[i].x + distance[i] / (distance[i] - distance[j]) * (in[j].x - in[i].x),
                            dj > 0.0 ? in[i].cut : cut));
@@ -445,7 +544,7 @@ void BeamTree::clip(const Loop& in, const std::vector<double>& distance, int sid
 }
 
 BeamTree::Vertex BeamTree::vertex(const glm::dvec3& x, bool cut) const {
-  return {x, cut, directional_ ? 0.0 : glm::distance(x, light_)};
+  return {x, cut, beam_tolerance(x)};
 }
 
 // Edges of a loop on one side of a plane whose both ends lie in it (distance 0 from sides)
@@ -460,8 +559,6 @@ void BeamTree::mark_cuts(Loop& loop, const std::vector<double>& distance) {
 double BeamTree::beam_tolerance(const glm::dvec3& x) const {
   return directional_ ? epsilon_ : epsilon_ * glm::distance(x, light_) / far_;
 }
-
-double BeamTree::beam_tolerance(const Vertex& v) const { return directional_ ? epsilon_ : epsilon_ * v.reach / far_; }
 
 // Program 2 with both sides of a thick plane.
 BeamTree::Side BeamTree::classify(const glm::dvec3& p) const {

@@ -17,7 +17,10 @@
 // are then inserted in that order (Program 3): a piece reaching an open leaf becomes visible
 // and the leaf becomes the chain of the planes through L and its edges, ending in a solid
 // leaf with its plane (Program 4); pieces reaching solid leaves are dropped (in shadow). An
-// edge that lies on a plane of the tree already bounds the leaf and adds no plane.
+// edge that lies on a plane of the tree already bounds the leaf and adds no plane. A large
+// set is first divided by a few planes through L (along D) into sectors, split nodes at the
+// top of the tree: no piece crosses to another sector's leaves, so each sector is sorted and
+// inserted on its own, in parallel.
 //
 // Tolerances (§4.3, ε the caller's, e.g. beam_epsilon). A point within ε of a splitting plane
 // goes down both sides (Program 2 sends it to the front only); a solid leaf's plane is ε thick
@@ -43,6 +46,7 @@
 #include <airlight/scene.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -61,6 +65,7 @@ struct BeamTreeStats {
   int thin_pieces = 0;       // pieces narrower than ε seen from L that reached an open leaf:
                              // dropped, the leaf left open for what lies behind
   int depth = 0;             // nodes on the longest path from the root to a leaf
+  int sectors = 0;           // the trees grown apart below the sector planes (1: none)
 };
 
 class BeamTree {
@@ -107,6 +112,23 @@ private:
   using Loop = std::vector<Vertex>;
   enum class Where : unsigned char { front, back, on, both };
 
+  // A tree over one sector's pieces, built on its own thread: its root (index 0) fills the
+  // sector's open leaf of nodes_, the rest are appended.
+  struct Subtree {
+    std::vector<Node> nodes;
+    std::vector<BeamPolygon> visible;
+    int sorted_pieces = 0, thin_pieces = 0;
+  };
+  struct Scratch {  // an insertion's buffers, kept from piece to piece
+    std::vector<double> distance;
+    Loop loop;
+    std::vector<std::pair<int, Piece>> stack;
+  };
+  struct Sector {
+    std::vector<Piece> pieces;
+    int leaf;  // the open leaf of nodes_ they go down to
+  };
+
   std::vector<Piece> prepare(std::span<const BeamPolygon> polygons);
   void admit(const BeamPolygon& polygon, size_t index, std::vector<Piece>& pieces);
   bool edge_on(std::span<const glm::dvec3> corners, const Plane& plane, double rounding) const;
@@ -119,11 +141,16 @@ private:
   Plane fewest_cuts(const std::vector<Piece>& set) const;
   void separate(std::vector<Piece>& set, const Plane& plane, std::vector<Piece>& near,
                 std::vector<Piece>& on, std::vector<Piece>& far) const;
-  void insert(Piece piece, std::vector<double>& distance);
-  void attach(int leaf, const Piece& piece);
+  void sectors(std::vector<Piece> pieces, int leaf, int levels, std::vector<Sector>& out);
+  std::optional<Plane> sector_plane(const std::vector<Piece>& set) const;
+  Where step(Piece& piece, const Plane& plane, Scratch& scratch, Piece& back) const;
+  Subtree grow(std::vector<Piece> pieces) const;
+  void graft(Subtree tree, int leaf);
+  void insert(Piece piece, Scratch& scratch, Subtree& tree) const;
+  void attach(int leaf, const Piece& piece, Subtree& tree) const;
   Loop outline(const Loop& loop) const;
   Plane edge_plane(const glm::dvec3& a, const glm::dvec3& b, bool faces_light) const;
-  int add_node();
+  static int add_node(std::vector<Node>& nodes);
   int depth() const;
 
   Where sides(const Loop& loop, const Plane& plane, bool beam, std::vector<double>& distance) const;
@@ -131,7 +158,6 @@ private:
   void clip(const Loop& in, const std::vector<double>& distance, int side, bool cut, Loop& out) const;
   Vertex vertex(const glm::dvec3& x, bool cut) const;
   double beam_tolerance(const glm::dvec3& x) const;
-  double beam_tolerance(const Vertex& v) const;  // the same, from the corner's reach
 
   bool directional_;
   glm::dvec3 light_;  // the position of a point light, the unit direction of a directional one

@@ -519,6 +519,22 @@ void builds_and_covers_once(std::initializer_list<int> sizes) {
     }
 }
 
+// Enough pieces for the tree to grow in sectors, each on its own: together they answer as one
+// tree would, the sector planes nowhere taken for a boundary.
+TEST_P(BeamTreeLight, ATreeGrownInSectorsClassifiesAsEmbreeDoes) {
+  const Light& light = GetParam().light;
+  Rng rng(20000);
+  const std::vector<BeamPolygon> scene = with_backplate(small_soup(20000, rng), light);
+  const double epsilon = beam_epsilon(light_origin(light), scene);
+  const BeamTree tree(light_origin(light), scene, epsilon);
+  const Tally tally = classify_against_embree(tree, light, scene, epsilon, 20000, rng);
+  std::printf("%-8s %d sectors, %d points: %d in the ε band (skipped), %d boundary outside it, %d wrong\n",
+              GetParam().name.c_str(), tree.stats().sectors, tally.points, tally.skipped, tally.boundary, tally.wrong);
+  EXPECT_GE(tree.stats().sectors, 4);
+  EXPECT_EQ(tally.wrong, 0);
+  EXPECT_EQ(tally.boundary, 0);
+}
+
 TEST(BeamTree, BuildsTenThousandTrianglesAndItsVisibleSetCoversTheSphereOnce) {
   builds_and_covers_once({100, 1000, 10000});
 }

@@ -402,10 +402,8 @@ struct Tally {
   int wrong = 0;     // outside the band, the tree answered lit or shadowed against Embree
 };
 
-inline Tally classify_against_embree(const Light& light, const std::vector<BeamPolygon>& scene, int points, Rng& rng) {
-  const LightOrigin origin = light_origin(light);
-  const double epsilon = beam_epsilon(origin, scene);
-  const BeamTree tree(origin, scene, epsilon);
+inline Tally classify_against_embree(const BeamTree& tree, const Light& light, const std::vector<BeamPolygon>& scene,
+                                     double epsilon, int points, Rng& rng) {
   const Truth truth(light, scene, epsilon);
   Tally tally;
   for (int k = 0; k < points; ++k) {
@@ -421,6 +419,11 @@ inline Tally classify_against_embree(const Light& light, const std::vector<BeamP
     tally.wrong += side != Side::boundary && (side == Side::lit) != *lit;
   }
   return tally;
+}
+
+inline Tally classify_against_embree(const Light& light, const std::vector<BeamPolygon>& scene, int points, Rng& rng) {
+  const double epsilon = beam_epsilon(light_origin(light), scene);
+  return classify_against_embree(BeamTree(light_origin(light), scene, epsilon), light, scene, epsilon, points, rng);
 }
 
 }  // namespace airlight::geometry::testing

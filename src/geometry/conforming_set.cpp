@@ -6,6 +6,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 namespace airlight::geometry {
 namespace {
@@ -74,11 +75,16 @@ ConformingSet::Key ConformingSet::key(const glm::dvec3& x) const {
   return {static_cast<long long>(c.x), static_cast<long long>(c.y), static_cast<long long>(c.z)};
 }
 
+// The cells within the tolerance of v: its own, and a neighbour across a face only where v
+// is that near it (twice the tolerance, for the rounding of the cell coordinates), most
+// often none, as cells are a typical piece's size.
 int ConformingSet::weld(const glm::dvec3& v) {
   const Key k = key(v);
-  for (long long dx = -1; dx <= 1; ++dx)
-    for (long long dy = -1; dy <= 1; ++dy)
-      for (long long dz = -1; dz <= 1; ++dz) {
+  const glm::dvec3 inside = (v - origin_) / cell_ - glm::dvec3(k[0], k[1], k[2]), near = 2.0 * tolerance_ / glm::dvec3(cell_);
+  const glm::ivec3 lo = -glm::ivec3(glm::lessThanEqual(inside, near)), hi = glm::ivec3(glm::greaterThanEqual(inside, 1.0 - near));
+  for (long long dx = lo.x; dx <= hi.x; ++dx)
+    for (long long dy = lo.y; dy <= hi.y; ++dy)
+      for (long long dz = lo.z; dz <= hi.z; ++dz) {
         const auto it = grid_.find({k[0] + dx, k[1] + dy, k[2] + dz});
         if (it == grid_.end()) continue;
         for (int id : it->second)
