@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <future>
 #include <thread>
 #include <vector>
 
@@ -220,10 +221,13 @@ TEST(Gpu, ProgramLinkedAheadOnTheWorkerIsTheCachedOne) {
   Context& context = Context::headless();
   const std::string defines = "#define SCALE 0.125\n";
   const int ahead = linked_ahead_count(), cached = cached_program_count();
+  const int back = taken_back_count();
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines);
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines);  // once
+  run_in_worker_context([] {});  // after the link: not taken back
   const Program& linked = cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines);
   EXPECT_EQ(linked_ahead_count(), ahead + 1) << "the worker did not link it";
+  EXPECT_EQ(taken_back_count(), back);
   EXPECT_EQ(cached_program_count(), cached + 1);
   EXPECT_EQ(fill(linked), fill(make_compute_program("gpu/test_shaders/fill.comp.glsl", defines)));
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines);  // already cached: nothing to link
@@ -260,6 +264,7 @@ TEST(Gpu, WarmRunsOnTheWorkerWithTheLinkedProgram) {
     warmed_id = p.id();  // read after cached_compute_program has waited for the link
     warmed_on = std::this_thread::get_id();
   });
+  run_in_worker_context([] {});
   const Program& linked = cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines);
   EXPECT_EQ(warmed_id, linked.id());
   EXPECT_NE(warmed_on, std::this_thread::get_id());
@@ -275,10 +280,44 @@ TEST(Gpu, AFailedWarmUpLeavesAWorkingProgram) {
   const std::string defines = "#define SCALE 0.25\n";
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines,
                      [](const Program&) { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1u << 20, 0); });
+  run_in_worker_context([] {});  // the warm-up on the worker, whose errors are dropped
   const Program& linked = cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines);
   EXPECT_EQ(fill(linked)[4], 4.0f);  // 0.25·4²
-  run_in_worker_context([] {});
   context.check("failed warm-up");
+}
+
+// A link the worker has not begun, queued behind a job that holds it, is
+// taken back: compiled and warmed here, while the worker goes on; its pass
+// then runs here, the worker's warmed one there (run_where_warmed).
+TEST(Gpu, ALinkTheWorkerHasNotBegunIsTakenBackAndWarmedHere) {
+  Context& context = Context::headless();
+  const char* fill_program = "gpu/test_shaders/fill.comp.glsl";
+  std::promise<void> started, release;
+  std::shared_future<void> released = release.get_future().share();
+  link_compute_ahead(fill_program, "#define SCALE 7.0\n", [&started, released](const Program&) {
+    started.set_value();
+    released.wait();
+  });
+  started.get_future().wait();  // the worker holds in the first warm-up
+  std::thread::id warmed_on;
+  link_compute_ahead(fill_program, "#define SCALE 8.0\n", [&](const Program&) { warmed_on = std::this_thread::get_id(); });
+  const int ahead = linked_ahead_count(), warmed = warmed_count(), back = taken_back_count();
+  const Program& second = cached_compute_program(fill_program, "#define SCALE 8.0\n");
+  EXPECT_EQ(warmed_on, std::this_thread::get_id());
+  EXPECT_EQ(taken_back_count(), back + 1);
+  release.set_value();
+  const Program& first = cached_compute_program(fill_program, "#define SCALE 7.0\n");  // the worker's
+  EXPECT_EQ(taken_back_count(), back + 1);
+  EXPECT_EQ(linked_ahead_count(), ahead + 2);
+  EXPECT_EQ(warmed_count(), warmed + 2);
+  EXPECT_EQ(fill(first)[3], 63.0f);  // 7·3²
+  EXPECT_EQ(fill(second)[3], 72.0f);
+  std::thread::id ran_first, ran_second;
+  run_where_warmed(first, [&] { ran_first = std::this_thread::get_id(); });
+  run_where_warmed(second, [&] { ran_second = std::this_thread::get_id(); });
+  EXPECT_NE(ran_first, std::this_thread::get_id());
+  EXPECT_EQ(ran_second, std::this_thread::get_id());
+  context.check("taken back");
 }
 
 // Work in the worker's context sees what this context wrote before it, and
@@ -332,9 +371,12 @@ TEST(Gpu, StoppedWorkerFinishesItsLinksAndTheNextLinkStartsAnother) {
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", "#define SCALE 5.0\n");
   stop_linking();
   const Program& first = cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 5.0\n");
+  const int back = taken_back_count();
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", "#define SCALE 6.0\n");
+  run_in_worker_context([] {});
   const Program& second = cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 6.0\n");
   EXPECT_EQ(linked_ahead_count(), ahead + 2);
+  EXPECT_EQ(taken_back_count(), back) << "the second worker did not link it";
   EXPECT_EQ(fill(first)[3], 45.0f);
   EXPECT_EQ(fill(second)[3], 54.0f);
   context.check("stop linking");

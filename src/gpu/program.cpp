@@ -6,6 +6,7 @@
 #include <airlight/error.hpp>
 
 #include <glm/gtc/type_ptr.hpp>
+#include <algorithm>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
@@ -244,7 +245,7 @@ public:
     thread_.join();
   }
 
-  std::future<Linked> link(std::vector<Stage> stages, std::string defines, Warm warm) {
+  std::future<Linked> link(const std::string& key, std::vector<Stage> stages, std::string defines, Warm warm) {
     auto job = std::make_shared<std::packaged_task<Linked()>>(
         [stages = std::move(stages), defines = std::move(defines), warm = std::move(warm)] {
           Program program(glCreateProgram());
@@ -259,17 +260,28 @@ public:
           return Linked{std::move(program), static_cast<bool>(warm)};
         });
     std::future<Linked> linked = job->get_future();
-    queue(std::packaged_task<void()>([job] { (*job)(); }));
+    queue(std::packaged_task<void()>([job] { (*job)(); }), key);
     return linked;
+  }
+
+  // Takes back the link of `key` if the worker has not started it: its
+  // future is then broken, never to be asked for.
+  bool take_back(const std::string& key) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto job = std::find_if(jobs_.begin(), jobs_.end(), [&](const Job& j) { return j.key == key; });
+    if (job == jobs_.end()) return false;
+    jobs_.erase(job);
+    return true;
   }
 
   bool on_its_thread() const { return std::this_thread::get_id() == thread_.get_id(); }
 
-  std::future<void> queue(std::packaged_task<void()> job) {
+  // `key`: a link's program key, which take_back finds it by.
+  std::future<void> queue(std::packaged_task<void()> job, std::string key = {}) {
     std::future<void> done = job.get_future();
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      jobs_.push_back(std::move(job));
+      jobs_.push_back({std::move(key), std::move(job)});
     }
     ready_.notify_one();
     return done;
@@ -288,7 +300,7 @@ private:
             std::unique_lock<std::mutex> lock(mutex_);
             ready_.wait(lock, [this] { return !jobs_.empty() || stopping_; });
             if (jobs_.empty()) break;
-            std::packaged_task<void()> job = std::move(jobs_.front());
+            std::packaged_task<void()> job = std::move(jobs_.front().task);
             jobs_.pop_front();
             lock.unlock();
             job();  // a compile or link error is the future's, thrown where the program is asked for
@@ -300,26 +312,49 @@ private:
   const Context* context_;
   std::mutex mutex_;
   std::condition_variable ready_;
-  std::deque<std::packaged_task<void()>> jobs_;
+  struct Job {
+    std::string key;
+    std::packaged_task<void()> task;
+  };
+  std::deque<Job> jobs_;
   bool stopping_ = false;
   std::thread thread_;  // last: it starts once everything it uses exists
 };
 
+// A program the Linker was asked to link, and its warm-up, which this thread
+// runs on it in this context if it takes the link back.
+struct Pending {
+  std::future<Linked> linked;
+  Warm warm;
+};
+
 // Programs a Linker is linking, by key (this thread's, as the cache).
-std::map<std::string, std::future<Linked>>& linking() {
-  static auto* pending = new std::map<std::string, std::future<Linked>>;
+std::map<std::string, Pending>& linking() {
+  static auto* pending = new std::map<std::string, Pending>;
   return *pending;
 }
 
-int taken_ahead = 0;  // programs cached_program took from the Linker
-int taken_warmed = 0;  // of those, the ones warmed on the worker
+// The programs the worker warmed, which run_where_warmed runs there.
+std::set<GLuint>& warmed_on_worker() {
+  static auto* warmed = new std::set<GLuint>;
+  return *warmed;
+}
+
+int taken_ahead = 0;  // programs link_ahead queued that cached_program took, linked there or taken back
+int taken_warmed = 0;  // of those, the ones warmed, there or here
+int taken_back = 0;  // of those, the ones taken back before the worker began them
+
+void count_taken(bool warmed) {
+  ++taken_ahead;
+  if (warmed) ++taken_warmed;
+}
 
 }  // namespace
 
 void link_ahead(std::initializer_list<Stage> stages, const std::string& defines, Warm warm) {
   const std::string key = program_key(stages, defines);
   if (program_cache().count(key) || linking().count(key)) return;
-  if (Linker* linker = Linker::instance()) linking().emplace(key, linker->link({stages}, defines, std::move(warm)));
+  if (Linker* linker = Linker::instance()) linking().emplace(key, Pending{linker->link(key, {stages}, defines, warm), warm});
 }
 
 void link_compute_ahead(const std::string& name, const std::string& defines, Warm warm) {
@@ -355,18 +390,31 @@ void run_in_worker_context(const std::function<void()>& work) {
   glDeleteSync(before);
 }
 
+void run_where_warmed(const Program& program, const std::function<void()>& work) {
+  if (warmed_on_worker().count(program.id())) return run_in_worker_context(work);
+  work();
+}
+
 const Program& cached_program(std::initializer_list<Stage> stages, const std::string& defines) {
   const std::string key = program_key(stages, defines);
   auto& cache = program_cache();
   auto it = cache.find(key);
   if (it != cache.end()) return it->second;
-  const auto pending = linking().find(key);
-  if (pending == linking().end()) return cache.emplace(key, make_program(stages, defines)).first->second;
-  std::future<Linked> linked = std::move(pending->second);
-  linking().erase(pending);
-  Linked taken = linked.get();  // throws the worker's compile or link error
-  ++taken_ahead;
-  if (taken.warmed) ++taken_warmed;
+  const auto found = linking().find(key);
+  if (found == linking().end()) return cache.emplace(key, make_program(stages, defines)).first->second;
+  Pending pending = std::move(found->second);
+  linking().erase(found);
+  Linker* linker = Linker::instance();
+  if (linker && linker->take_back(key)) {  // still queued behind other work: compiled here meanwhile
+    Program program = make_program(stages, defines);
+    if (pending.warm) pending.warm(program);
+    ++taken_back;
+    count_taken(static_cast<bool>(pending.warm));
+    return cache.emplace(key, std::move(program)).first->second;
+  }
+  Linked taken = pending.linked.get();  // throws the worker's compile or link error
+  count_taken(taken.warmed);
+  if (taken.warmed) warmed_on_worker().insert(taken.program.id());
   return cache.emplace(key, std::move(taken.program)).first->second;
 }
 
@@ -380,14 +428,17 @@ int linked_ahead_count() { return taken_ahead; }
 
 int warmed_count() { return taken_warmed; }
 
+int taken_back_count() { return taken_back; }
+
 int programs_linking() { return static_cast<int>(linking().size()); }
 
 void stop_linking() { Linker::stop(); }
 
 void clear_program_cache() {
-  for (auto& [key, linked] : linking()) linked.wait();  // deleted here, not while the worker links them
+  for (auto& [key, pending] : linking()) pending.linked.wait();  // deleted here, not while the worker links them
   linking().clear();
   program_cache().clear();
+  warmed_on_worker().clear();
 }
 
 void dispatch_pixels(int width, int height) {

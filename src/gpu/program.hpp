@@ -34,7 +34,9 @@ Program make_compute_program(const std::string& name, const std::string& defines
 
 // The same, compiled on first use and kept for the process, keyed by the
 // stages' names and the define set: a method asks for its program every frame
-// and pays for compiling only when the define set is new.
+// and pays for compiling only when the define set is new. A program that
+// link_ahead queued and the worker has not yet begun is taken back and
+// compiled here, beside the worker's job, and warmed here with its Warm.
 const Program& cached_program(std::initializer_list<Stage> stages, const std::string& defines = "");
 const Program& cached_compute_program(const std::string& name, const std::string& defines = "");
 // Starts compiling and linking a program that cached_program will be asked for
@@ -49,7 +51,7 @@ const Program& cached_compute_program(const std::string& name, const std::string
 // worker's context: a dispatch there makes llvmpipe generate the program's
 // machine code beside the frame's earlier passes, as the link is. That code
 // is the worker context's alone (llvmpipe compiles per context), so a warmed
-// program is then dispatched by run_in_worker_context, every frame.
+// program is then dispatched there, every frame (run_where_warmed).
 using Warm = std::function<void(const Program&)>;
 void link_ahead(std::initializer_list<Stage> stages, const std::string& defines = "", Warm warm = {});
 void link_compute_ahead(const std::string& name, const std::string& defines = "", Warm warm = {});
@@ -59,12 +61,17 @@ void link_compute_ahead(const std::string& name, const std::string& defines = ""
 // commands so far and before the ones after. Without a worker, or called from
 // the worker's own thread, runs it here.
 void run_in_worker_context(const std::function<void()>& work);
+// `work`, which dispatches `program`: in the worker's context if the worker
+// warmed the program (link_ahead's Warm), else here.
+void run_where_warmed(const Program& program, const std::function<void()>& work);
 // Programs the cache has compiled so far in this process.
 int cached_program_count();
-// Of those, the ones a worker linked ahead (link_ahead).
+// Of those, the ones link_ahead queued: linked by the worker, or taken back.
 int linked_ahead_count();
-// Of those, the ones it also warmed (link_ahead's Warm).
+// Of those, the ones warmed by link_ahead's Warm, on the worker or here.
 int warmed_count();
+// Of those, the ones cached_program took back before the worker began them.
+int taken_back_count();
 // Programs linked ahead that cached_program has not been asked for yet: 0
 // after a frame that used everything it linked ahead.
 int programs_linking();

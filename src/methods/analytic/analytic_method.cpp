@@ -62,7 +62,7 @@ private:
   void render_airlight(const kit::SceneFrame& frame, const gpu::Texture& target, gpu::PassTimer& timer) override {
     gpu::ScopedPass pass(timer, "airlight");
     const gpu::Program& p = gpu::cached_compute_program(program, defines(frame));
-    frame.run_on_worker([&] {
+    frame.run_where_warmed(p, [&] {
       inputs(target)();
       glUseProgram(p.id());
       frame.dispatch_pixels();

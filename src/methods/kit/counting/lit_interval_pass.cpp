@@ -121,7 +121,7 @@ void LitIntervalPass::run(const SceneFrame& frame, const CrossingGeometry& geome
   }
   gpu::ScopedPass pass(timer, "airlight");
   const gpu::Program& program = gpu::cached_compute_program(resolve_program, resolve_defines(frame));
-  frame.run_on_worker([&] { resolve(frame, program, eye, target); });  // where link_ahead warmed it
+  frame.run_where_warmed(program, [&] { resolve(frame, program, eye, target); });
 }
 
 // Every pixel's list of crossings, the pool grown and the triangles drawn

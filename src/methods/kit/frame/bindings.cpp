@@ -58,11 +58,12 @@ gpu::Warm SceneFrame::warm_pixels(std::function<void()> bind_pass) const {
     glUseProgram(p.id());
     glDispatchCompute(1, 1, 1);
     glUseProgram(0);
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::frame_block, frame.frame_block);  // warmed here, the frame goes on
   };
 }
 
-void SceneFrame::run_on_worker(const std::function<void()>& pass) const {
-  gpu::run_in_worker_context([&] {
+void SceneFrame::run_where_warmed(const gpu::Program& program, const std::function<void()>& pass) const {
+  gpu::run_where_warmed(program, [&] {
     bind();
     pass();
   });

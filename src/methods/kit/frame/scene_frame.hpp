@@ -88,9 +88,10 @@ public:
   // on the worker's thread, maybe after the frame's build has begun: not a
   // buffer the build may replace, which nothing compiled depends on.
   gpu::Warm warm_pixels(std::function<void()> bind_pass) const;
-  // Runs `pass` in the worker's context with this frame bound there
-  // (gpu::run_in_worker_context), where warm_pixels warmed its program.
-  void run_on_worker(const std::function<void()>& pass) const;
+  // Runs `pass`, which dispatches `program`, with this frame bound, in the
+  // context where warm_pixels warmed the program (gpu::run_where_warmed): the
+  // worker's, or this one's if this thread took its link back.
+  void run_where_warmed(const gpu::Program& program, const std::function<void()>& pass) const;
 
   // What every program that includes scene.glsl is compiled with, for this
   // frame: the binding points and the scene's structure as constants — light
