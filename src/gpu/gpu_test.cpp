@@ -224,7 +224,7 @@ TEST(Gpu, ProgramLinkedAheadOnTheWorkerIsTheCachedOne) {
   const int back = taken_back_count();
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines);
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines);  // once
-  run_in_worker_context([] {});  // after the link: not taken back
+  stop_linking();  // the worker links it before it ends: not taken back
   const Program& linked = cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines);
   EXPECT_EQ(linked_ahead_count(), ahead + 1) << "the worker did not link it";
   EXPECT_EQ(taken_back_count(), back);
@@ -264,7 +264,7 @@ TEST(Gpu, WarmRunsOnTheWorkerWithTheLinkedProgram) {
     warmed_id = p.id();  // read after cached_compute_program has waited for the link
     warmed_on = std::this_thread::get_id();
   });
-  run_in_worker_context([] {});
+  stop_linking();
   const Program& linked = cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines);
   EXPECT_EQ(warmed_id, linked.id());
   EXPECT_NE(warmed_on, std::this_thread::get_id());
@@ -280,7 +280,7 @@ TEST(Gpu, AFailedWarmUpLeavesAWorkingProgram) {
   const std::string defines = "#define SCALE 0.25\n";
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", defines,
                      [](const Program&) { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1u << 20, 0); });
-  run_in_worker_context([] {});  // the warm-up on the worker, whose errors are dropped
+  stop_linking();  // the warm-up on the worker, whose errors are dropped
   const Program& linked = cached_compute_program("gpu/test_shaders/fill.comp.glsl", defines);
   EXPECT_EQ(fill(linked)[4], 4.0f);  // 0.25·4²
   context.check("failed warm-up");
@@ -318,6 +318,66 @@ TEST(Gpu, ALinkTheWorkerHasNotBegunIsTakenBackAndWarmedHere) {
   EXPECT_NE(ran_first, std::this_thread::get_id());
   EXPECT_EQ(ran_second, std::this_thread::get_id());
   context.check("taken back");
+}
+
+// Holds the worker in a warm-up until release(): what is queued after waits.
+class HeldWorker {
+public:
+  HeldWorker() {
+    link_compute_ahead("gpu/test_shaders/fill.comp.glsl", "#define SCALE 9.0\n", [this](const Program&) {
+      started_.set_value();
+      released_.wait();
+    });
+    started_.get_future().wait();
+  }
+  void release() { release_.set_value(); }
+  ~HeldWorker() { cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 9.0\n"); }
+
+private:
+  std::promise<void> started_, release_;
+  std::shared_future<void> released_ = release_.get_future().share();
+};
+
+// Programs linked together are taken back together: asked for one, the
+// others are compiled and warmed here too when asked, none by the worker.
+TEST(Gpu, ProgramsLinkedTogetherAreTakenBackTogether) {
+  Context& context = Context::headless();
+  const char* fill_program = "gpu/test_shaders/fill.comp.glsl";
+  HeldWorker held;
+  std::vector<std::thread::id> warmed_on;
+  link_compute_ahead_together({{fill_program, "#define SCALE 10.0\n"}, {fill_program, "#define SCALE 11.0\n"}},
+                              [&](const Program&) { warmed_on.push_back(std::this_thread::get_id()); });
+  const int back = taken_back_count();
+  const Program& first = cached_compute_program(fill_program, "#define SCALE 10.0\n");
+  held.release();
+  stop_linking();  // whatever the worker still had, it has done
+  const Program& second = cached_compute_program(fill_program, "#define SCALE 11.0\n");
+  EXPECT_EQ(taken_back_count(), back + 2);
+  EXPECT_EQ(warmed_on, std::vector<std::thread::id>(2, std::this_thread::get_id()));
+  EXPECT_EQ(programs_linking(), 1) << "the held program is asked for when `held` goes";
+  EXPECT_EQ(fill(first)[2], 40.0f);  // 10·2²
+  EXPECT_EQ(fill(second)[2], 44.0f);
+  context.check("linked together");
+}
+
+// Work for the worker's context goes before the links it has not begun: the
+// frame waits for it, and they are ahead of their use.
+TEST(Gpu, WorkInTheWorkerContextGoesBeforeLinksNotBegun) {
+  Context& context = Context::headless();
+  HeldWorker held;
+  bool linked = false;
+  link_compute_ahead("gpu/test_shaders/fill.comp.glsl", "#define SCALE 12.0\n", [&](const Program&) { linked = true; });
+  std::thread releaser([&] {  // once the work is queued behind the held job, beside the link
+    while (worker_jobs_waiting() < 2) std::this_thread::yield();
+    held.release();
+  });
+  bool linked_before = true;
+  run_in_worker_context([&] { linked_before = linked; });
+  releaser.join();
+  EXPECT_FALSE(linked_before);
+  cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 12.0\n");
+  EXPECT_TRUE(linked);
+  context.check("work before links");
 }
 
 // Work in the worker's context sees what this context wrote before it, and
@@ -373,7 +433,7 @@ TEST(Gpu, StoppedWorkerFinishesItsLinksAndTheNextLinkStartsAnother) {
   const Program& first = cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 5.0\n");
   const int back = taken_back_count();
   link_compute_ahead("gpu/test_shaders/fill.comp.glsl", "#define SCALE 6.0\n");
-  run_in_worker_context([] {});
+  stop_linking();
   const Program& second = cached_compute_program("gpu/test_shaders/fill.comp.glsl", "#define SCALE 6.0\n");
   EXPECT_EQ(linked_ahead_count(), ahead + 2);
   EXPECT_EQ(taken_back_count(), back) << "the second worker did not link it";

@@ -13,6 +13,7 @@
 #include <deque>
 #include <future>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <regex>
 #include <set>
@@ -201,9 +202,18 @@ struct Linked {
   Program program;
   bool warmed;
 };
+// What one job links, in order; cached_program moves each out when asked.
+using Bundle = std::shared_ptr<std::vector<Linked>>;
+
+struct ProgramSource {
+  std::string key;
+  std::vector<Stage> stages;
+  std::string defines;
+};
 
 // One thread that compiles and links in a context sharing the caller's
-// objects, and runs the jobs run_in_worker_context gives it there, in order.
+// objects, and runs the jobs run_in_worker_context gives it there: links in
+// order, and each run_in_worker_context job before the links not begun.
 // llvmpipe spends about half of a large program's compile in the link (GLSL
 // to NIR, docs/decisions.md); the other half, the machine code, it generates
 // at the first dispatch for the context that dispatches: a program warmed
@@ -245,43 +255,62 @@ public:
     thread_.join();
   }
 
-  std::future<Linked> link(const std::string& key, std::vector<Stage> stages, std::string defines, Warm warm) {
-    auto job = std::make_shared<std::packaged_task<Linked()>>(
-        [stages = std::move(stages), defines = std::move(defines), warm = std::move(warm)] {
-          Program program(glCreateProgram());
-          link_into(program, stages, defines);
-          if (warm) warm(program);
-          // A warm-up only saves the first dispatch its code: one that failed
-          // (its textures deleted meanwhile, by a frame that threw) leaves it
-          // there, so its GL errors are dropped, not thrown into a later frame.
-          while (glGetError() != GL_NO_ERROR) {
-          }
-          glFinish();  // the link is complete before another context uses the program
-          return Linked{std::move(program), static_cast<bool>(warm)};
-        });
-    std::future<Linked> linked = job->get_future();
-    queue(std::packaged_task<void()>([job] { (*job)(); }), key);
+  // Links the programs in one job, each warmed right after its link.
+  std::shared_future<Bundle> link(std::vector<ProgramSource> sources, Warm warm) {
+    std::vector<std::string> keys;
+    for (const ProgramSource& source : sources) keys.push_back(source.key);
+    auto job = std::make_shared<std::packaged_task<Bundle()>>([sources = std::move(sources), warm = std::move(warm)] {
+      auto bundle = std::make_shared<std::vector<Linked>>();
+      for (const ProgramSource& source : sources) {
+        Program program(glCreateProgram());
+        link_into(program, source.stages, source.defines);
+        if (warm) warm(program);
+        // A warm-up only saves the first dispatch its code: one that failed
+        // (its textures deleted meanwhile, by a frame that threw) leaves it
+        // there, so its GL errors are dropped, not thrown into a later frame.
+        while (glGetError() != GL_NO_ERROR) {
+        }
+        bundle->push_back({std::move(program), static_cast<bool>(warm)});
+      }
+      glFinish();  // the links are complete before another context uses the programs
+      return bundle;
+    });
+    std::shared_future<Bundle> linked = job->get_future().share();
+    queue(std::packaged_task<void()>([job] { (*job)(); }), std::move(keys));
     return linked;
   }
 
-  // Takes back the link of `key` if the worker has not started it: its
-  // future is then broken, never to be asked for.
-  bool take_back(const std::string& key) {
+  // Takes back the job that links `key` if the worker has not begun it: the
+  // keys of all it would have linked, whose future is then broken, never to
+  // be asked for; none if it has begun.
+  std::vector<std::string> take_back(const std::string& key) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    const auto job = std::find_if(jobs_.begin(), jobs_.end(), [&](const Job& j) { return j.key == key; });
-    if (job == jobs_.end()) return false;
+    const auto job = std::find_if(jobs_.begin(), jobs_.end(), [&](const Job& j) {
+      return std::find(j.keys.begin(), j.keys.end(), key) != j.keys.end();
+    });
+    if (job == jobs_.end()) return {};
+    std::vector<std::string> keys = std::move(job->keys);
     jobs_.erase(job);
-    return true;
+    return keys;
   }
 
   bool on_its_thread() const { return std::this_thread::get_id() == thread_.get_id(); }
 
-  // `key`: a link's program key, which take_back finds it by.
-  std::future<void> queue(std::packaged_task<void()> job, std::string key = {}) {
+  int waiting() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return static_cast<int>(jobs_.size());
+  }
+
+  // `keys`: what a link job links, which take_back finds it by. A job
+  // without (run_in_worker_context's) goes before the links not begun: it
+  // uses programs the frame already has, and the frame waits for it.
+  std::future<void> queue(std::packaged_task<void()> job, std::vector<std::string> keys = {}) {
     std::future<void> done = job.get_future();
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      jobs_.push_back({std::move(key), std::move(job)});
+      const auto at = keys.empty() ? std::find_if(jobs_.begin(), jobs_.end(), [](const Job& j) { return !j.keys.empty(); })
+                                   : jobs_.end();
+      jobs_.insert(at, {std::move(keys), std::move(job)});
     }
     ready_.notify_one();
     return done;
@@ -313,7 +342,7 @@ private:
   std::mutex mutex_;
   std::condition_variable ready_;
   struct Job {
-    std::string key;
+    std::vector<std::string> keys;
     std::packaged_task<void()> task;
   };
   std::deque<Job> jobs_;
@@ -321,10 +350,12 @@ private:
   std::thread thread_;  // last: it starts once everything it uses exists
 };
 
-// A program the Linker was asked to link, and its warm-up, which this thread
-// runs on it in this context if it takes the link back.
+// A program the Linker was asked to link (item `index` of its job's
+// bundle), and its warm-up, which this thread runs on it in this context if
+// it takes the job back.
 struct Pending {
-  std::future<Linked> linked;
+  std::shared_future<Bundle> linked;
+  size_t index;
   Warm warm;
 };
 
@@ -332,6 +363,13 @@ struct Pending {
 std::map<std::string, Pending>& linking() {
   static auto* pending = new std::map<std::string, Pending>;
   return *pending;
+}
+
+// Programs of a job taken back, not yet asked for: their warm-ups, run here
+// when they are.
+std::map<std::string, Warm>& taken_back_warms() {
+  static auto* warms = new std::map<std::string, Warm>;
+  return *warms;
 }
 
 // The programs the worker warmed, which run_where_warmed runs there.
@@ -349,16 +387,37 @@ void count_taken(bool warmed) {
   if (warmed) ++taken_warmed;
 }
 
+// What of `sources` is neither cached nor linking, in one job.
+void link_ahead(std::vector<ProgramSource> sources, const Warm& warm) {
+  std::erase_if(sources, [](const ProgramSource& source) {
+    return program_cache().count(source.key) || linking().count(source.key) || taken_back_warms().count(source.key);
+  });
+  Linker* linker = Linker::instance();
+  if (!linker || sources.empty()) return;
+  std::vector<std::string> keys;
+  for (const ProgramSource& source : sources) keys.push_back(source.key);
+  const std::shared_future<Bundle> linked = linker->link(std::move(sources), warm);
+  for (size_t k = 0; k < keys.size(); ++k) linking().emplace(keys[k], Pending{linked, k, warm});
+}
+
+ProgramSource compute_source(const std::string& name, const std::string& defines) {
+  return {program_key({{GL_COMPUTE_SHADER, name}}, defines), {{GL_COMPUTE_SHADER, name}}, defines};
+}
+
 }  // namespace
 
 void link_ahead(std::initializer_list<Stage> stages, const std::string& defines, Warm warm) {
-  const std::string key = program_key(stages, defines);
-  if (program_cache().count(key) || linking().count(key)) return;
-  if (Linker* linker = Linker::instance()) linking().emplace(key, Pending{linker->link(key, {stages}, defines, warm), warm});
+  link_ahead({{program_key(stages, defines), stages, defines}}, warm);
 }
 
 void link_compute_ahead(const std::string& name, const std::string& defines, Warm warm) {
-  link_ahead({{GL_COMPUTE_SHADER, name}}, defines, std::move(warm));
+  link_ahead({compute_source(name, defines)}, warm);
+}
+
+void link_compute_ahead_together(const std::vector<std::pair<std::string, std::string>>& programs, Warm warm) {
+  std::vector<ProgramSource> sources;
+  for (const auto& [name, defines] : programs) sources.push_back(compute_source(name, defines));
+  link_ahead(std::move(sources), warm);
 }
 
 void run_in_worker_context(const std::function<void()>& work) {
@@ -400,19 +459,27 @@ const Program& cached_program(std::initializer_list<Stage> stages, const std::st
   auto& cache = program_cache();
   auto it = cache.find(key);
   if (it != cache.end()) return it->second;
+  Linker* linker = Linker::instance();
+  if (linker && linking().count(key))
+    for (const std::string& k : linker->take_back(key)) {  // not begun: compiled here, beside the worker's job
+      taken_back_warms().emplace(k, linking().at(k).warm);
+      linking().erase(k);
+    }
+  const auto back = taken_back_warms().find(key);
+  if (back != taken_back_warms().end()) {
+    const Warm warm = std::move(back->second);
+    taken_back_warms().erase(back);
+    Program program = make_program(stages, defines);
+    if (warm) warm(program);
+    ++taken_back;
+    count_taken(static_cast<bool>(warm));
+    return cache.emplace(key, std::move(program)).first->second;
+  }
   const auto found = linking().find(key);
   if (found == linking().end()) return cache.emplace(key, make_program(stages, defines)).first->second;
   Pending pending = std::move(found->second);
   linking().erase(found);
-  Linker* linker = Linker::instance();
-  if (linker && linker->take_back(key)) {  // still queued behind other work: compiled here meanwhile
-    Program program = make_program(stages, defines);
-    if (pending.warm) pending.warm(program);
-    ++taken_back;
-    count_taken(static_cast<bool>(pending.warm));
-    return cache.emplace(key, std::move(program)).first->second;
-  }
-  Linked taken = pending.linked.get();  // throws the worker's compile or link error
+  Linked taken = std::move(pending.linked.get()->at(pending.index));  // get() throws the worker's compile or link error
   count_taken(taken.warmed);
   if (taken.warmed) warmed_on_worker().insert(taken.program.id());
   return cache.emplace(key, std::move(taken.program)).first->second;
@@ -430,13 +497,19 @@ int warmed_count() { return taken_warmed; }
 
 int taken_back_count() { return taken_back; }
 
-int programs_linking() { return static_cast<int>(linking().size()); }
+int worker_jobs_waiting() {
+  Linker* linker = Linker::instance();
+  return linker ? linker->waiting() : 0;
+}
+
+int programs_linking() { return static_cast<int>(linking().size() + taken_back_warms().size()); }
 
 void stop_linking() { Linker::stop(); }
 
 void clear_program_cache() {
   for (auto& [key, pending] : linking()) pending.linked.wait();  // deleted here, not while the worker links them
   linking().clear();
+  taken_back_warms().clear();
   program_cache().clear();
   warmed_on_worker().clear();
 }

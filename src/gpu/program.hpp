@@ -55,11 +55,16 @@ const Program& cached_compute_program(const std::string& name, const std::string
 using Warm = std::function<void(const Program&)>;
 void link_ahead(std::initializer_list<Stage> stages, const std::string& defines = "", Warm warm = {});
 void link_compute_ahead(const std::string& name, const std::string& defines = "", Warm warm = {});
-// Runs `work` on the worker's thread in the worker's context, after what it
-// was asked before, and returns when it is done (rethrowing what it threw, and
-// a GL error it raised as Failure). Fences order it after this context's
-// commands so far and before the ones after. Without a worker, or called from
-// the worker's own thread, runs it here.
+// Compute programs (name, defines) linked and warmed by the worker in one job,
+// and taken back together: a pass that dispatches them all runs in one place.
+void link_compute_ahead_together(const std::vector<std::pair<std::string, std::string>>& programs, Warm warm);
+// Runs `work` on the worker's thread in the worker's context, after the job
+// it is on and the work it was given before, but before the links it has not
+// begun (the frame waits for this; they are ahead of their use), and returns
+// when it is done (rethrowing what it threw, and a GL error it raised as
+// Failure). Fences order it after this context's commands so far and before
+// the ones after. Without a worker, or called from the worker's own thread,
+// runs it here.
 void run_in_worker_context(const std::function<void()>& work);
 // `work`, which dispatches `program`: in the worker's context if the worker
 // warmed the program (link_ahead's Warm), else here.
@@ -72,6 +77,8 @@ int linked_ahead_count();
 int warmed_count();
 // Of those, the ones cached_program took back before the worker began them.
 int taken_back_count();
+// The worker's jobs not begun: links and run_in_worker_context's.
+int worker_jobs_waiting();
 // Programs linked ahead that cached_program has not been asked for yet: 0
 // after a frame that used everything it linked ahead.
 int programs_linking();

@@ -37,7 +37,7 @@ public:
   // This frame's triangles and eye counts, after its shadow maps are drawn; GPU work timed with `timer`.
   virtual void build(const SceneFrame& frame, gpu::PassTimer& timer) = 0;
   // Starts linking what build() will use for this frame (GpuMethod::link_ahead).
-  virtual void link_ahead(const SceneFrame& frame) const { (void)frame; }
+  virtual void link_ahead(const SceneFrame& frame) { (void)frame; }
   virtual CountedTriangles triangles() const = 0;
   virtual EyeCounts eye_counts() const = 0;
   // Whether eye_counts() may hold planes through the eye (EyeCounts::planes):

@@ -20,8 +20,11 @@ public:
 private:
   void prepare_airlight(const Scene& scene) override;
   void link_ahead(const SceneFrame& frame, const Texture& target) override {
-    geometry_->link_ahead(frame);  // built first
+    // The pass's programs first: the geometry's build, which runs first, takes
+    // back what the worker has not begun (LightVolumeMesh::link_ahead); the
+    // resolve's link and warm-up would hold a build queued after it.
     pass_->link_ahead(frame, target);
+    geometry_->link_ahead(frame);
   }
   void build_frame(const SceneFrame& frame, PassTimer& timer) override;
   void render_airlight(const SceneFrame& frame, const Texture& target, PassTimer& timer) override;

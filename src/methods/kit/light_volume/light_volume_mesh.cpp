@@ -137,8 +137,9 @@ void LightVolumeMesh::build(const SceneFrame& frame, gpu::PassTimer& timer) {
   timer_->end_frame();
 }
 
-void LightVolumeMesh::build_lights(const SceneFrame& frame) {
-  frame.bind();
+// The frame's lights' kinds, grid and triangle ranges, and the objects sized
+// for them (allocate): before the build's programs are warmed, which bind them.
+void LightVolumeMesh::size_for(const SceneFrame& frame) {
   const int lights = frame.light_count();
   ranges_.assign(static_cast<size_t>(lights), {});
   bool maps = false, cubes = false;
@@ -162,19 +163,48 @@ void LightVolumeMesh::build_lights(const SceneFrame& frame) {
     triangle_count_ += range.count;
   }
   allocate(grid_, (cubes ? 6 : 1) * 2, triangle_count_, lights);  // shell: two surfaces; texel: steps and origins
+}
+
+void LightVolumeMesh::build_lights(const SceneFrame& frame) {
+  size_for(frame);
   // Lights without a map: inside their (unbounded) lit volume, outside any shell.
   const GLint no_map = depth_ == Depth::shell ? 1 : 0;
   glClearNamedBufferData(eye_counts_.id(), GL_R32I, GL_RED_INTEGER, GL_INT, &no_map);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, extras_binding, extras_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, eye_binding, eye_counts_.id());
-  glBindImageTexture(vertices_unit, vertices_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-  if (depth_ != Depth::texel) {
-    glBindImageTexture(low_unit, cell_low_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-    glBindImageTexture(high_unit, cell_high_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-  }
-  for (int i = 0; i < lights; ++i)
+  for (int i = 0; i < frame.light_count(); ++i)
     if (ranges_[static_cast<size_t>(i)].kind != Kind::none) build_light(i, ranges_[static_cast<size_t>(i)].kind, frame);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  frame.bind();  // as build() says, whichever context built the lights
+  bind_objects();
+}
+
+void LightVolumeMesh::bind_objects() const {
+  images().bind();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, extras_binding, extras_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, eye_binding, eye_counts_.id());
+}
+
+// The build's images, by their names (for the worker's thread, LightVolumeMesh::warm).
+void LightVolumeMesh::Images::bind() const {
+  glBindImageTexture(vertices_unit, vertices, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  if (low) glBindImageTexture(low_unit, low, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+  if (high) glBindImageTexture(high_unit, high, 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+}
+
+LightVolumeMesh::Images LightVolumeMesh::images() const {
+  return {vertices_.id(), depth_ != Depth::texel ? cell_low_.id() : 0u, depth_ != Depth::texel ? cell_high_.id() : 0u};
+}
+
+// A build program's warm-up: the frame's textures and the build's images
+// bound as the build binds them, and one workgroup with no items, where every
+// invocation returns at once (item_count is 0 until the build sets it).
+gpu::Warm LightVolumeMesh::warm(const SceneFrame& frame) const {
+  return [frame = frame.bindings(), images = images()](const gpu::Program& p) {
+    frame.bind();
+    images.bind();
+    glUseProgram(p.id());
+    glDispatchCompute(1, 1, 1);
+    glUseProgram(0);
+  };
 }
 
 int LightVolumeMesh::grid_for(int map_size) const { return std::max(1, std::min(resolution_, map_size)); }
@@ -191,16 +221,21 @@ std::string LightVolumeMesh::defines(Kind kind, const char* program, bool split)
   return program == cell_depths && split ? d + "#define CELL_SPLIT\n" : d;
 }
 
-void LightVolumeMesh::link_ahead(const SceneFrame& frame) const {
-  const int s = frame.shadow_resolution();
-  const bool split = sub_blocks_of(grid_for(s), s) > 1;
+// Each kind's programs linked and warmed together, the last light's kind
+// first: the build runs from the first light, and takes back the kinds the
+// worker has not begun when it reaches them (gpu::cached_program), so that
+// the two meet in the middle.
+void LightVolumeMesh::link_ahead(const SceneFrame& frame) {
+  size_for(frame);
   std::vector<Kind> kinds;
-  for (size_t i = 0; i < frame.shadow_kinds().size(); ++i) {
-    const Kind kind = kind_of(frame.shadow_kinds()[i], frame.inputs().lights[i].type);
-    if (kind == Kind::none || std::find(kinds.begin(), kinds.end(), kind) != kinds.end()) continue;
-    kinds.push_back(kind);
-    for (const char* program : build_programs(kind, depth_))
-      gpu::link_compute_ahead(program, defines(kind, program, split));
+  for (const LightRange& range : ranges_)
+    if (range.kind != Kind::none && std::find(kinds.begin(), kinds.end(), range.kind) == kinds.end())
+      kinds.push_back(range.kind);
+  const bool split = sub_blocks_of(grid_, map_size_) > 1;
+  for (auto kind = kinds.rbegin(); kind != kinds.rend(); ++kind) {
+    std::vector<std::pair<std::string, std::string>> programs;
+    for (const char* program : build_programs(*kind, depth_)) programs.emplace_back(program, defines(*kind, program, split));
+    gpu::link_compute_ahead_together(programs, warm(frame));
   }
 }
 
@@ -220,12 +255,12 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
   }
   const int sub_blocks = sub_blocks_of(r, s);
   const bool split = sub_blocks > 1;
-  const std::vector<const char*> programs = build_programs(kind, depth_);
-  const auto runs = [&](const char* program) {
-    return std::find(programs.begin(), programs.end(), program) != programs.end();
-  };
+  const std::vector<const char*> names = build_programs(kind, depth_);
+  std::vector<const gpu::Program*> programs;  // asked for here, on the drawing thread
+  for (const char* name : names) programs.push_back(&gpu::cached_compute_program(name, defines(kind, name, split)));
+  const auto runs = [&](const char* program) { return std::find(names.begin(), names.end(), program) != names.end(); };
   auto use = [&](const char* program) -> const gpu::Program& {
-    const gpu::Program& p = gpu::cached_compute_program(program, defines(kind, program, split));
+    const gpu::Program& p = *programs[static_cast<size_t>(std::find(names.begin(), names.end(), program) - names.begin())];
     glUseProgram(p.id());
     gpu::set_uniform(p, "light_index", light);
     gpu::set_uniform(p, "grid", r);
@@ -255,30 +290,34 @@ void LightVolumeMesh::build_light(int light, Kind kind, const SceneFrame& frame)
     }
   };
   const GLuint cells = static_cast<GLuint>(faces * r * r);
-  if (runs(cell_depths)) {
-    if (split) {  // atomics from every sub-block: start from the empty interval
-      const GLuint empty_low = 0xffffffffu, empty_high = 0u;
-      glClearTexImage(cell_low_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty_low);
-      glClearTexImage(cell_high_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty_high);
+  // Where the kind's programs were warmed, all in one place (link_ahead).
+  frame.run_where_warmed(*programs.front(), [&] {
+    bind_objects();
+    if (runs(cell_depths)) {
+      if (split) {  // atomics from every sub-block: start from the empty interval
+        const GLuint empty_low = 0xffffffffu, empty_high = 0u;
+        glClearTexImage(cell_low_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty_low);
+        glClearTexImage(cell_high_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty_high);
+      }
+      dispatch_items(use(cell_depths), 0, cells * static_cast<GLuint>(sub_blocks * sub_blocks));
     }
-    dispatch_items(use(cell_depths), 0, cells * static_cast<GLuint>(sub_blocks * sub_blocks));
-  }
-  dispatch_items(use(grid_vertices), 0, static_cast<GLuint>(faces * (r + 1) * (r + 1)));
-  const bool shell = depth_ == Depth::shell, spot = kind == Kind::spot;
-  if (runs(seam_vertices)) dispatch_items(use(seam_vertices), 0, static_cast<GLuint>(6 * 4 * r));
-  dispatch_items(use(eye_count), 0, 1);
-  const GLsizei first = ranges_[static_cast<size_t>(light)].first;
-  const GLuint per_cell = shell ? 4 : 6;  // shell: two per cell and surface; texel: the top and two walls
-  write_records(use(grid_triangles), first, per_cell * cells);
-  const GLsizei extras_first = first + static_cast<GLsizei>(per_cell * cells);
-  if (runs(extra_vertices)) dispatch_items(use(extra_vertices), 0, spot ? 1u : static_cast<GLuint>(4 * r + 8));
-  if (runs(extra_triangles)) {
-    // shell: the strips between the borders; cube: the walls across its
-    // edges; spot: the sides to the apex; directional: walls, skirt and cap.
-    const bool cube = kind == Kind::cube;
-    const int items = shell ? 8 * r : cube ? 6 * 8 * r : spot ? 12 * r : 20 * r + 14;
-    write_records(use(extra_triangles), extras_first, static_cast<GLuint>(items));
-  }
+    dispatch_items(use(grid_vertices), 0, static_cast<GLuint>(faces * (r + 1) * (r + 1)));
+    const bool shell = depth_ == Depth::shell, spot = kind == Kind::spot;
+    if (runs(seam_vertices)) dispatch_items(use(seam_vertices), 0, static_cast<GLuint>(6 * 4 * r));
+    dispatch_items(use(eye_count), 0, 1);
+    const GLsizei first = ranges_[static_cast<size_t>(light)].first;
+    const GLuint per_cell = shell ? 4 : 6;  // shell: two per cell and surface; texel: the top and two walls
+    write_records(use(grid_triangles), first, per_cell * cells);
+    const GLsizei extras_first = first + static_cast<GLsizei>(per_cell * cells);
+    if (runs(extra_vertices)) dispatch_items(use(extra_vertices), 0, spot ? 1u : static_cast<GLuint>(4 * r + 8));
+    if (runs(extra_triangles)) {
+      // shell: the strips between the borders; cube: the walls across its
+      // edges; spot: the sides to the apex; directional: walls, skirt and cap.
+      const bool cube = kind == Kind::cube;
+      const int items = shell ? 8 * r : cube ? 6 * 8 * r : spot ? 12 * r : 20 * r + 14;
+      write_records(use(extra_triangles), extras_first, static_cast<GLuint>(items));
+    }
+  });
 }
 
 EyeCounts LightVolumeMesh::eye_counts() const {

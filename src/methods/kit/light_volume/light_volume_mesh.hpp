@@ -114,7 +114,7 @@ public:
   // binding::first_free_storage bound to its own objects.
   void build(const SceneFrame& frame, gpu::PassTimer& timer) override;
   // Starts linking the build's programs for the frame's kinds of light.
-  void link_ahead(const SceneFrame& frame) const override;
+  void link_ahead(const SceneFrame& frame) override;
 
   CountedTriangles triangles() const override { return {{}, &triangles_.buffer(), static_cast<size_t>(triangle_count_)}; }
   GLsizei triangle_count() const { return triangle_count_; }  // this frame's, all lights
@@ -141,6 +141,14 @@ public:
   GLsizei max_records_per_binding() const { return max_records_; }
 
 private:
+  struct Images {  // the build's images by their names, for the worker's thread
+    GLuint vertices, low, high;  // low, high: 0 for the texel mesh
+    void bind() const;
+  };
+  Images images() const;
+  void bind_objects() const;  // the images and the extras' and eye counts' buffers
+  gpu::Warm warm(const SceneFrame& frame) const;
+  void size_for(const SceneFrame& frame);
   void build_lights(const SceneFrame& frame);
   void build_light(int light, Kind kind, const SceneFrame& frame);
   int grid_for(int map_size) const;
