@@ -12,10 +12,7 @@
 //  - the eye inside the shell: the march starts at the eye.
 // The march over [front, back] is raymarch's (march.glsl: its steps N,
 // sampling and jitter), per light, N samples over that light's stretch only.
-// Two programs of this file: with EXACT_PARTS, the exact parts, stored by one
-// dispatch; without, the march, whose dispatches add to them. Apart, they
-// compile side by side, on the worker and on the drawing thread
-// (docs/decisions.md "The first frame (issue 28)").
+// The exact parts are added by the pass's first dispatch.
 #define SCENE_IN_REGISTERS
 #include "methods/kit/frame/pixel.glsl"
 #include "methods/kit/gamma/lit_gamma.glsl"
@@ -77,8 +74,8 @@ vec3 exact_parts_airlight(int i, vec3 dir, float front, float back, float d) {
 }
 
 // Light i's part of the pixel's ray [0, d]: its samples of this dispatch over
-// [front, back], or with EXACT_PARTS the stretches before and after.
-vec3 light_part(int i, ivec2 pixel, vec3 dir, float d, SampleRange r, float offset) {
+// [front, back], and with `exact_parts` the stretches before and after.
+vec3 light_part(int i, ivec2 pixel, vec3 dir, float d, SampleRange r, float offset, bool exact_parts) {
   float front = uintBitsToFloat(imageLoad(bounds, ivec3(pixel, 2 * LIGHT_DATA(i))).r);
   float back = uintBitsToFloat(imageLoad(bounds, ivec3(pixel, 2 * LIGHT_DATA(i) + 1)).r);
   if (shell_eye[LIGHT_DATA(i)] == 0) {
@@ -87,25 +84,22 @@ vec3 light_part(int i, ivec2 pixel, vec3 dir, float d, SampleRange r, float offs
   }
   front = min(front, d);
   back = clamp(back, front, d);
-#ifdef EXACT_PARTS
-  return exact_parts_airlight(i, dir, front, back, d);
-#else
-  return march_between(i, dir, front, back, r, offset);
-#endif
+  vec3 sum = march_between(i, dir, front, back, r, offset);
+  if (exact_parts) sum += exact_parts_airlight(i, dir, front, back, d);
+  return sum;
 }
 
 void main() {
   FRAME_PIXEL_OR_RETURN(pixel);
   PixelRay ray = load_pixel_ray(pixel);
   SampleRange range = SampleRange(steps, first_sample, 1, min(steps, first_sample + sample_count));
+  bool exact_parts = first_sample == 0;
   cut_into_pieces(ray.dir, ray.d);
   float offset = step_offset(pixel);
   vec3 sum = vec3(0.0);
-#define ADD_LIGHT(i) sum += light_part(i, pixel, ray.dir, ray.d, range, offset);
+#define ADD_LIGHT(i) sum += light_part(i, pixel, ray.dir, ray.d, range, offset, exact_parts);
   FOR_EACH_LIGHT_SHARED(ADD_LIGHT)
 #undef ADD_LIGHT
-#ifndef EXACT_PARTS
-  sum += imageLoad(airlight_out, pixel).rgb;
-#endif
+  if (!exact_parts) sum += imageLoad(airlight_out, pixel).rgb;
   imageStore(airlight_out, pixel, vec4(sum, 1.0));
 }

@@ -13,7 +13,6 @@ namespace airlight::methods {
 namespace {
 
 constexpr GLuint shell_eye_binding = kit::binding::first_free_storage;
-constexpr const char* march_program = "methods/sv_march/sv_march.comp.glsl";
 constexpr const char* bounds_vertex = "methods/kit/counting/crossings.vert.glsl";
 constexpr const char* bounds_fragment = "methods/sv_march/sv_bounds.frag.glsl";
 
@@ -40,7 +39,7 @@ public:
   explicit SvMarch(const Settings& s)
       : GpuMethod(s),
         shell_(s.integer("volume_resolution"), kit::LightVolumeMesh::Depth::shell),
-        march_(kit::MarchSettings::from(s), march_program, march_defines(s)) {}
+        march_(kit::MarchSettings::from(s), "methods/sv_march/sv_march.comp.glsl", march_defines(s)) {}
 
 private:
   void prepare_airlight(const Scene& scene) override {
@@ -49,18 +48,11 @@ private:
     march_.prepare();
   }
 
-  // The exact parts, then the march: both take the worker longer than the
+  // The march alone: its link and warm-up take the worker longer than the
   // frame's other passes take this thread, the shell's and the bounds draw's
-  // links included, so this thread takes back the march's link if the worker
-  // has not begun it when the march is asked for (docs/decisions.md "The
-  // first frame (issue 28)").
+  // links included (docs/decisions.md "The first frame (issue 28)").
   void link_ahead(const kit::SceneFrame& frame, const gpu::Texture& target) override {
     size_bounds(frame);
-    gpu::link_compute_ahead(march_program, exact_defines(frame),
-                            frame.warm_pixels([bounds = bounds_.id(), target = target.id()] {
-                              bind_bounds(bounds);
-                              bind_target(target);
-                            }));
     march_.link_ahead(frame, target, [bounds = bounds_.id()] { bind_bounds(bounds); });
   }
   void build_frame(const kit::SceneFrame& frame, gpu::PassTimer& timer) override { shell_.build(frame, timer); }
@@ -71,28 +63,15 @@ private:
       draw_bounds(frame);
     }
     gpu::ScopedPass pass(timer, "airlight");
-    const auto bind_own = [&] {  // what sv_march.comp.glsl reads besides the march's
+    march_.run(frame, target, [&] {  // what sv_march.comp.glsl reads besides the march's
       bind_bounds(bounds_.id());
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shell_eye_binding, shell_.eye_count_buffer().id());
-    };
-    march_.program(frame);  // first: linked after the exact parts, it is the one this thread may take back
-    const gpu::Program& exact = gpu::cached_compute_program(march_program, exact_defines(frame));
-    frame.run_where_warmed(exact, [&] {  // stored, then the march's dispatches add to them
-      bind_target(target.id());
-      bind_own();
-      glUseProgram(exact.id());
-      frame.dispatch_pixels();
     });
-    march_.run(frame, target, bind_own);
   }
 
-  std::string exact_defines(const kit::SceneFrame& frame) const { return march_.defines(frame) + "#define EXACT_PARTS\n"; }
-
-  // The warm-ups bind the bounds and the target alone: the shells' eye counts,
-  // a buffer the build may grow meanwhile, are no part of what llvmpipe
-  // compiles for.
+  // The warm-up binds the bounds alone: the shells' eye counts, a buffer the
+  // build may grow meanwhile, are no part of what llvmpipe compiles for.
   static void bind_bounds(GLuint bounds) { glBindImageTexture(1, bounds, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI); }
-  static void bind_target(GLuint target) { glBindImageTexture(0, target, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F); }
 
   // Two layers per light at the G-buffer's size.
   void size_bounds(const kit::SceneFrame& frame) {

@@ -76,7 +76,7 @@ void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target, co
   const int stride = settings_.block * settings_.block;
   const int own_samples = (settings_.steps + stride - 1) / stride;  // of pixel q = 0, the most
   size_for(frame);
-  const gpu::Program& program = this->program(frame);
+  const gpu::Program& program = gpu::cached_compute_program(program_, defines(frame));
   frame.run_where_warmed(program, [&] {
     images(target).bind();
     if (bind_own) bind_own();
@@ -91,10 +91,6 @@ void MarchPass::run(const kit::SceneFrame& frame, const gpu::Texture& target, co
     }
   });
   light_samples_ = static_cast<double>(frame.width()) * frame.height() * settings_.steps / stride * frame.light_count();
-}
-
-const gpu::Program& MarchPass::program(const kit::SceneFrame& frame) const {
-  return gpu::cached_compute_program(program_, defines(frame));
 }
 
 // The light guide and the spread at the G-buffer's size, as the settings ask.

@@ -51,13 +51,6 @@ public:
   // (SceneFrame::run_where_warmed): `bind_own`, run there first, binds what a
   // method's own program reads besides.
   void run(const kit::SceneFrame& frame, const gpu::Texture& target, const std::function<void()>& bind_own = {});
-  // run()'s program for this frame (gpu::cached_compute_program): asked for
-  // before a pass that runs first, so that its link is taken back here if the
-  // worker has not begun it.
-  const gpu::Program& program(const kit::SceneFrame& frame) const;
-  // What the program is compiled with for this frame: the frame's defines,
-  // the method's and the march's settings.
-  std::string defines(const kit::SceneFrame& frame) const;
   // Starts linking run()'s program for this frame's defines and warming it
   // with `target` (GpuMethod::link_ahead); `bind_own` binds by values it
   // holds, as SceneFrame::warm_pixels says.
@@ -81,6 +74,7 @@ private:
   };
   Images images(const gpu::Texture& target) const;
   void size_for(const kit::SceneFrame& frame);
+  std::string defines(const kit::SceneFrame& frame) const;
 
   MarchSettings settings_;
   std::string program_, extra_defines_;
