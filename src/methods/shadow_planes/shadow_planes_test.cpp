@@ -164,13 +164,15 @@ TEST(ShadowPlanes, MoreCrossingsThanThePoolHoldsAreNotDropped) {
   EXPECT_TRUE(small.airlight.pixels == large.airlight.pixels);
 }
 
-// The airlight needs no shadow map: a frame without the surface term draws none.
+// The airlight needs no shadow map: a frame without the surface term draws
+// none. Its passes: the G-buffer, the silhouettes' CPU build, the crossings
+// and the resolve.
 TEST(ShadowPlanes, AirlightPassDrawsNoShadowMap) {
   const Scene scene = builtin_scene("biri_sphere");
   auto method = prepared(find_method("shadow_planes"), scene, {});
   std::vector<std::string> passes;
   for (const auto& t : airlight::render(*method, scene, 32, 24, false).times) passes.push_back(t.pass);
-  EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "crossings", "airlight"}));
+  EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "build", "crossings", "airlight"}));
 }
 
 // A caster with casts_shadows = false lets the light through: biri_sphere's
