@@ -39,7 +39,7 @@
 // ε of L. Non-finite polygons, and polygons with a corner farther than ε (plus rounding)
 // from their plane, throw airlight::Failure.
 //
-// The caller includes the backplate of the light's influence (influence_backplate) among the
+// The caller includes the backplate of the light's influence (influence_backplate.hpp) among the
 // polygons, so that every beam ends on a piece of the visible set (§3.2.1).
 #include "geometry/shadow_edges.hpp"
 
@@ -176,15 +176,5 @@ private:
 // beam_tree.cpp for the conditioning it buys.
 double beam_epsilon(const LightOrigin& light, std::span<const BeamPolygon> polygons,
                     double relative = 1e-6);
-
-// The backplate of the light's influence volume (§3.2.1, Nilsson's "visible polygons of the
-// backplate"), so that every beam of light ends on a polygon: a point light's cube of
-// half-size far_distance around L (six faces); a spot's base at far_distance along its axis
-// circumscribing the cone when cone_deg ≤ 45°, else the faces of that cube (in the spot's
-// frame) that the cone reaches; a beam's far face (aperture, length); an unbounded
-// directional light's square of half-size far_distance at far_distance downstream of the
-// origin, which closes every beam through the ball of radius far_distance about the origin.
-// Every face has source -1.
-std::vector<BeamPolygon> influence_backplate(const Light& light, double far_distance);
 
 }  // namespace airlight::geometry

@@ -3,6 +3,7 @@
 // truth, seeded polygon soups and lights, measures of polygons, and the tally
 // of a tree's classification against Embree.
 #include "geometry/beam_tree.hpp"
+#include "geometry/influence_backplate.hpp"
 #include "optics/light.hpp"
 
 #include <airlight/error.hpp>

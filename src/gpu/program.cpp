@@ -296,9 +296,11 @@ public:
 
   bool on_its_thread() const { return std::this_thread::get_id() == thread_.get_id(); }
 
-  int waiting() {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    return static_cast<int>(jobs_.size());
+  // The running worker's jobs not begun (none if no worker runs: it starts none).
+  static int waiting() {
+    if (!running()) return 0;
+    const std::lock_guard<std::mutex> lock(running()->mutex_);
+    return static_cast<int>(running()->jobs_.size());
   }
 
   // `keys`: what a link job links, which take_back finds it by. A job
@@ -497,10 +499,7 @@ int warmed_count() { return taken_warmed; }
 
 int taken_back_count() { return taken_back; }
 
-int worker_jobs_waiting() {
-  Linker* linker = Linker::instance();
-  return linker ? linker->waiting() : 0;
-}
+int worker_jobs_waiting() { return Linker::waiting(); }
 
 int programs_linking() { return static_cast<int>(linking().size() + taken_back_warms().size()); }
 

@@ -1,5 +1,6 @@
 #include "methods/beam_volumes/lit_pyramids.hpp"
 
+#include "geometry/influence_backplate.hpp"
 #include "methods/beam_volumes/pyramid_sides.hpp"
 #include "methods/kit/frame/model_of.hpp"
 #include "methods/kit/frame/view_reach.hpp"

@@ -113,7 +113,8 @@ public:
   // leaves image units 0–2 and storage bindings from
   // binding::first_free_storage bound to its own objects.
   void build(const SceneFrame& frame, gpu::PassTimer& timer) override;
-  // Starts linking the build's programs for the frame's kinds of light.
+  // Sizes the build's objects for the frame and starts linking and warming
+  // its programs, each kind of light's together (gpu::link_compute_ahead_together).
   void link_ahead(const SceneFrame& frame) override;
 
   CountedTriangles triangles() const override { return {{}, &triangles_.buffer(), static_cast<size_t>(triangle_count_)}; }
